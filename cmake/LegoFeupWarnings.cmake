@@ -1,0 +1,16 @@
+# Warnings for every target of the project: `legofeup_enable_warnings(target)`.
+# LEGOFEUP_WARNINGS_AS_ERRORS (the `dev` preset turns it on) makes them errors.
+option(LEGOFEUP_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" OFF)
+
+function(legofeup_enable_warnings target)
+    target_compile_options(${target} PRIVATE
+        -Wall -Wextra -Wpedantic
+        -Wshadow -Wconversion -Wsign-conversion -Wold-style-cast
+        -Wnon-virtual-dtor -Woverloaded-virtual -Wcast-align
+        -Wnull-dereference -Wdouble-promotion -Wformat=2
+        -Wimplicit-fallthrough -Wmisleading-indentation -Wduplicated-cond
+        -Wduplicated-branches -Wlogical-op -Wuseless-cast)
+    if(LEGOFEUP_WARNINGS_AS_ERRORS)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
+endfunction()
