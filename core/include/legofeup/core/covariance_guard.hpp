@@ -1,0 +1,108 @@
+#pragma once
+// Keeping a covariance matrix a covariance matrix.
+//
+// Students type absurd Q and R on purpose (1e-12 … 1e6); the filter must stay finite,
+// symmetric and positive semi-definite whatever they type. After every predict and update
+// the filter base passes P through condition_covariance:
+//   1. symmetrise, P ← (P + Pᵀ)/2 (rounding makes the two triangles drift apart);
+//   2. ceiling: rows/columns with P_ii > max are scaled by √(max/P_ii) (a congruence, so
+//      correlations and definiteness are kept);
+//   3. floor: P_ii < min gets (min − P_ii) added on the diagonal (adding a PSD matrix);
+//   4. if an LDLᵀ (Cholesky) factorisation still fails (an eigenvalue ≤ 0 from cancellation), P is
+//      projected onto the PD cone by clamping its eigenvalues to ≥ min (and to ≥ 1e-12 of
+//      the largest, the most a double can resolve).
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace legofeup {
+
+struct CovarianceLimits {
+    double min_variance = 1e-12;  ///< floor on every variance (state units squared)
+    double max_variance = 1e12;   ///< ceiling on every variance
+};
+
+/// Smallest eigenvalue kept by the projection, relative to the largest.
+inline constexpr double kRelativeEigenvalueFloor = 1e-12;
+
+/// What condition_covariance had to do, as bit flags (0: nothing).
+enum CovarianceRepair : std::uint8_t {
+    kRepairNone = 0,
+    kRepairCeiling = 1,
+    kRepairFloor = 2,
+    kRepairProjection = 4,
+};
+
+/// True if the symmetric matrix P is positive definite: every pivot of its LDLᵀ
+/// factorisation (Cholesky without square roots) is positive. Written out for small fixed
+/// sizes because Eigen's general LLT costs more than the whole filter step here.
+template <int N>
+bool is_positive_definite(const Eigen::Matrix<double, N, N>& P) {
+    Eigen::Matrix<double, N, N> L = Eigen::Matrix<double, N, N>::Zero();
+    Eigen::Matrix<double, N, 1> d;
+    for (int j = 0; j < N; ++j) {
+        double pivot = P(j, j);
+        for (int k = 0; k < j; ++k) {
+            pivot -= L(j, k) * L(j, k) * d(k);
+        }
+        if (!(pivot > 0.0)) {
+            return false;  // also catches NaN
+        }
+        d(j) = pivot;
+        for (int i = j + 1; i < N; ++i) {
+            double value = P(i, j);
+            for (int k = 0; k < j; ++k) {
+                value -= L(i, k) * L(j, k) * d(k);
+            }
+            L(i, j) = value / pivot;
+        }
+    }
+    return true;
+}
+
+/// Conditions P in place (see the file comment). P must be finite. Returns the repairs made.
+template <int N>
+std::uint8_t condition_covariance(Eigen::Matrix<double, N, N>& P, const CovarianceLimits& limits) {
+    std::uint8_t repairs = kRepairNone;
+    P = (0.5 * (P + P.transpose())).eval();
+
+    Eigen::Matrix<double, N, 1> scale = Eigen::Matrix<double, N, 1>::Ones();
+    for (int i = 0; i < N; ++i) {
+        if (P(i, i) > limits.max_variance) {
+            scale(i) = std::sqrt(limits.max_variance / P(i, i));
+            repairs |= kRepairCeiling;
+        }
+    }
+    if (repairs & kRepairCeiling) {
+        // P ← S·P·S elementwise; s_i·s_j == s_j·s_i exactly, so P stays exactly symmetric.
+        for (int i = 0; i < N; ++i) {
+            for (int j = 0; j < N; ++j) {
+                P(i, j) *= scale(i) * scale(j);
+            }
+        }
+    }
+
+    for (int i = 0; i < N; ++i) {
+        if (P(i, i) < limits.min_variance) {
+            P(i, i) = limits.min_variance;  // == P_ii + (min − P_ii)
+            repairs |= kRepairFloor;
+        }
+    }
+
+    if (!is_positive_definite<N>(P)) {
+        // Clamp to the floor, and to 1e-12 of the largest eigenvalue: a condition number
+        // beyond ~1e12 cannot be represented in doubles and would fail Cholesky again.
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N>> eigen(P);
+        const double floor = std::max(limits.min_variance,
+                                      kRelativeEigenvalueFloor * eigen.eigenvalues().maxCoeff());
+        const auto clamped = eigen.eigenvalues().cwiseMax(floor);
+        P = eigen.eigenvectors() * clamped.asDiagonal() * eigen.eigenvectors().transpose();
+        P = (0.5 * (P + P.transpose())).eval();
+        repairs |= kRepairProjection;
+    }
+    return repairs;
+}
+
+}  // namespace legofeup

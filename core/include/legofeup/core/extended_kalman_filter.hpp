@@ -1,0 +1,140 @@
+#pragma once
+// The Extended Kalman Filter (paper Algorithm 1, eq. 11–21).
+//
+// Process model hooks (one object per step, carrying its input U and noise Q):
+//   static constexpr int kNoiseSize;
+//   Vector predict_state(const Vector& x)            f(X, U, 0)          (eq. 11)
+//   Matrix<N,N> state_jacobian(const Vector& x)      ∇f_X = ∂f/∂X        (eq. 13)
+//   Matrix<N,Nq> noise_jacobian(const Vector& x)     ∇f_q = ∂f/∂q        (eq. 13)
+//   Matrix<Nq,Nq> noise_covariance()                 Q
+// Measurement model hooks (one object per measurement):
+//   static constexpr int kSize;
+//   Vector measurement()                             z
+//   Vector predict_measurement(const Vector& x)      h(X)
+//   Matrix<M,N> jacobian(const Vector& x)            ∇h_X                (eq. 17)
+//   Matrix<M,M> noise_covariance()                   ∇h_r·R·∇h_rᵀ        (eq. 16)
+//   Vector residual(z, ẑ)                            z − ẑ, angles wrapped
+//
+// Numerics: S is factorised with LDLT (never inverted); the covariance update is the Joseph
+// form P⁺ = (I − W∇h_X)·P·(I − W∇h_X)ᵀ + W·R_z·Wᵀ, which equals eq. 21 (corrected) for the
+// optimal gain and stays positive semi-definite for any gain; the base then symmetrises
+// and floors P. Non-finite inputs or results leave x and P unchanged.
+
+#include <Eigen/Cholesky>
+#include <concepts>
+#include <limits>
+
+#include "legofeup/core/filter_base.hpp"
+
+namespace legofeup {
+
+template <class M, int N>
+concept EkfProcessModel = requires(const M& model, const Eigen::Matrix<double, N, 1>& x) {
+    { M::kNoiseSize } -> std::convertible_to<int>;
+    { model.predict_state(x) } -> std::convertible_to<Eigen::Matrix<double, N, 1>>;
+    { model.state_jacobian(x) } -> std::convertible_to<Eigen::Matrix<double, N, N>>;
+    { model.noise_jacobian(x) } -> std::convertible_to<Eigen::Matrix<double, N, M::kNoiseSize>>;
+    {
+        model.noise_covariance()
+        } -> std::convertible_to<Eigen::Matrix<double, M::kNoiseSize, M::kNoiseSize>>;
+};
+
+template <class M, int N>
+concept EkfMeasurementModel = requires(const M& model, const Eigen::Matrix<double, N, 1>& x,
+                                       const Eigen::Matrix<double, M::kSize, 1>& z) {
+    { model.measurement() } -> std::convertible_to<Eigen::Matrix<double, M::kSize, 1>>;
+    { model.predict_measurement(x) } -> std::convertible_to<Eigen::Matrix<double, M::kSize, 1>>;
+    { model.jacobian(x) } -> std::convertible_to<Eigen::Matrix<double, M::kSize, N>>;
+    { model.noise_covariance() } -> std::convertible_to<Eigen::Matrix<double, M::kSize, M::kSize>>;
+    { model.residual(z, z) } -> std::convertible_to<Eigen::Matrix<double, M::kSize, 1>>;
+};
+
+/// Optional Mahalanobis gate: reject a measurement whose NIS exceeds `threshold`
+/// (use chi_square_quantile(p, kSize) for a gate at probability p).
+struct MahalanobisGate {
+    bool enabled = false;
+    double threshold = std::numeric_limits<double>::infinity();
+};
+
+/// Everything one update computed, for the snapshot and the plots.
+template <int M, int N>
+struct UpdateReport {
+    StepStatus status = StepStatus::NotAttempted;
+    Eigen::Matrix<double, M, 1> measurement = Eigen::Matrix<double, M, 1>::Zero();  ///< z
+    Eigen::Matrix<double, M, 1> predicted = Eigen::Matrix<double, M, 1>::Zero();    ///< h(X̂)
+    Eigen::Matrix<double, M, 1> innovation = Eigen::Matrix<double, M, 1>::Zero();   ///< ν
+    Eigen::Matrix<double, M, M> innovation_covariance = Eigen::Matrix<double, M, M>::Zero();  ///< S
+    Eigen::Matrix<double, N, M> gain = Eigen::Matrix<double, N, M>::Zero();  ///< W (eq. 16)
+    double nis = std::numeric_limits<double>::quiet_NaN();                   ///< νᵀS⁻¹ν
+};
+
+template <class StateSpace>
+class ExtendedKalmanFilter : public FilterBase<StateSpace> {
+    using Base = FilterBase<StateSpace>;
+
+  public:
+    static constexpr int kSize = Base::kSize;
+    using Vector = typename Base::Vector;
+    using Covariance = typename Base::Covariance;
+
+    /// Prediction (eq. 11–12): X̂ ← f(X̂, U, 0),  P ← ∇f_X·P·∇f_Xᵀ + ∇f_q·Q·∇f_qᵀ.
+    template <EkfProcessModel<kSize> Model>
+    StepStatus predict(const Model& model) {
+        const Vector& x = this->state();
+        const auto F = model.state_jacobian(x);  // ∇f_X, at the prior estimate
+        const auto G = model.noise_jacobian(x);  // ∇f_q
+        const Covariance P =
+            F * this->covariance() * F.transpose() + G * model.noise_covariance() * G.transpose();
+        return this->commit(model.predict_state(x), P);
+    }
+
+    /// Update (eq. 14–21) with one measurement.
+    template <EkfMeasurementModel<kSize> Model>
+    UpdateReport<Model::kSize, kSize> update(const Model& model, const MahalanobisGate& gate = {}) {
+        constexpr int M = Model::kSize;
+        using MeasurementMatrix = Eigen::Matrix<double, M, M>;
+        UpdateReport<M, kSize> report;
+        const Vector& x = this->state();
+        const Covariance& P = this->covariance();
+
+        report.measurement = model.measurement();                                  // z
+        report.predicted = model.predict_measurement(x);                           // h(X̂)
+        report.innovation = model.residual(report.measurement, report.predicted);  // ν = z − h
+        const auto H = model.jacobian(x);                                          // ∇h_X
+        const MeasurementMatrix R = model.noise_covariance();  // ∇h_r R ∇h_rᵀ
+        MeasurementMatrix S = H * P * H.transpose() + R;       // eq. 16
+        S = (0.5 * (S + S.transpose())).eval();
+        report.innovation_covariance = S;
+        if (!report.innovation.allFinite() || !S.allFinite() || !R.allFinite()) {
+            report.status = StepStatus::RejectedNonFinite;
+            return report;
+        }
+
+        const Eigen::LDLT<MeasurementMatrix> ldlt(S);
+        if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0.0).all()) {
+            report.status = StepStatus::RejectedSingular;
+            return report;
+        }
+        report.nis = report.innovation.dot(ldlt.solve(report.innovation));
+        if (gate.enabled && !(report.nis <= gate.threshold)) {
+            report.status = StepStatus::RejectedByGate;
+            return report;
+        }
+
+        // W = P·∇h_Xᵀ·S⁻¹ = (S⁻¹·∇h_X·P)ᵀ since P and S are symmetric (eq. 16). Solved one
+        // column at a time: Eigen sends a matrix right-hand side through its blocked GEMM
+        // path, which for these sizes costs more than the rest of the update.
+        const Eigen::Matrix<double, M, kSize> HP = H * P;
+        for (int column = 0; column < kSize; ++column) {
+            report.gain.row(column) = ldlt.solve(HP.col(column)).transpose();
+        }
+        const Vector x_new = x + report.gain * report.innovation;  // eq. 14
+        const Covariance I_WH = Covariance::Identity() - report.gain * H;
+        const Covariance P_new = I_WH * P * I_WH.transpose()  // Joseph form of eq. 21
+                                 + report.gain * R * report.gain.transpose();
+        report.status = this->commit(x_new, P_new);
+        return report;
+    }
+};
+
+}  // namespace legofeup

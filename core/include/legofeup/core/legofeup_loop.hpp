@@ -1,0 +1,71 @@
+#pragma once
+// The LegoFeup loop (paper §IV, Fig. 3): one control period in, one wheel command out.
+//
+//   sensor frame ─► odometry (eq. 7–9) ─► EKF predict (eq. 11–13)
+//                ─► IR A/D → d_s1, d_s2 (eq. 2) ─► observation (eq. 3) if both in range
+//                ─► wall association (Fig. 4) ─► EKF update (eq. 14–21)
+//                ─► control routine on the estimate ─► (V, W) ─► (V1, V2) (eq. 1)
+//
+// The loop knows nothing of where frames come from (simulator, UDP, NXT): it is a value-in /
+// value-out step that never allocates. Odometry-only, "direct" (R ≈ 0) and EKF operation are
+// settings of FilterTuning, not separate code paths.
+
+#include <vector>
+
+#include "legofeup/core/extended_kalman_filter.hpp"
+#include "legofeup/core/loop_config.hpp"
+#include "legofeup/core/loop_snapshot.hpp"
+#include "legofeup/core/pose_state_space.hpp"
+#include "legofeup/core/sensor_frame.hpp"
+
+namespace legofeup {
+
+class LegoFeupLoop {
+  public:
+    /// Throws std::invalid_argument listing every issue if `config` does not validate.
+    explicit LegoFeupLoop(LoopConfig config);
+
+    /// Runs one control period. The returned snapshot stays valid until the next call.
+    const LoopSnapshot& step(const SensorFrame& frame);
+
+    /// Back to the initial belief with the configured routine restarted; the next frame only
+    /// sets the encoder reference.
+    void reset();
+
+    /// Applies a new configuration while running: everything takes effect at the next step
+    /// except the initial belief (next reset) and the routine (next reset or
+    /// set_controller). Returns the issues and changes nothing if it does not validate.
+    std::vector<ConfigIssue> reconfigure(LoopConfig config);
+
+    /// Replaces the running routine (it starts afresh) and the configured one.
+    void set_controller(Controller controller);
+
+    /// The command used while the routine is ManualDrive (keyboard driving); ignored otherwise.
+    void set_manual_command(const VelocityCommand& command);
+
+    const LoopConfig& config() const { return config_; }
+    const LoopSnapshot& snapshot() const { return snapshot_; }
+    const ExtendedKalmanFilter<PoseStateSpace>& filter() const { return filter_; }
+
+  private:
+    void apply_tuning();
+    void predict_from_encoders(const SensorFrame& frame);
+    void observe_and_update(const SensorFrame& frame);
+
+    LoopConfig config_;
+    ExtendedKalmanFilter<PoseStateSpace> filter_;
+    Controller controller_;
+    Pose2 odometry_pose_;
+    std::array<std::int32_t, 2> last_counts_{};
+    bool have_counts_ = false;
+    std::uint64_t steps_ = 0;
+
+    // Derived from config_.filter by apply_tuning(), so the step does no setup work.
+    Eigen::Matrix2d process_noise_ = Eigen::Matrix2d::Zero();  // Q
+    Eigen::Matrix2d ir_noise_ = Eigen::Matrix2d::Zero();       // R
+    MahalanobisGate gate_;
+
+    LoopSnapshot snapshot_;
+};
+
+}  // namespace legofeup

@@ -1,0 +1,75 @@
+#pragma once
+// Every parameter of the LegoFeup loop, with the defaults of the standard scenario
+// (docs/loop.md), and their validation. Files (TOML), the GUI and the CLI all fill this
+// one structure; validate() is the single place that decides what is acceptable.
+
+#include <string>
+#include <vector>
+
+#include "legofeup/core/controller.hpp"
+#include "legofeup/core/covariance_guard.hpp"
+#include "legofeup/core/ir_geometry.hpp"
+#include "legofeup/core/motion.hpp"
+#include "legofeup/core/odometry.hpp"
+#include "legofeup/core/sharp_ir.hpp"
+#include "legofeup/core/wall_association.hpp"
+#include "legofeup/core/walls.hpp"
+
+namespace legofeup {
+
+/// The EKF's noise model and switches; all of it may change while the robot runs.
+struct FilterTuning {
+    double q11 = 1e-7;  ///< Q₁₁: variance of ε_d per control period, m²
+    double q22 = 1e-5;  ///< Q₂₂: variance of ε_Δθ per control period, rad²
+    double r11 = 1e-4;  ///< R₁₁: variance of ε_ds1 (front IR distance), m²
+    double r22 = 1e-4;  ///< R₂₂: variance of ε_ds2 (rear IR distance), m²
+    /// false: odometry only — walls are still associated (and shown) but never used.
+    bool wall_updates = true;
+    bool gate_enabled = false;       ///< reject updates whose NIS exceeds the gate
+    double gate_probability = 0.99;  ///< the gate is the χ²(2) quantile at this probability
+    CovarianceLimits limits;
+};
+
+/// The belief the filter starts from (and returns to on reset).
+struct InitialBelief {
+    Pose2 pose{-1.0, -1.0, 0.0};  ///< the start of the standard square path
+    double var_x = 1e-4;          ///< P0 diagonal, m²
+    double var_y = 1e-4;          ///< m²
+    double var_theta = 1e-3;      ///< rad²
+};
+
+struct LoopConfig {
+    OdometryParams odometry;
+    IrMount ir_mount;
+    SharpIrCurve ir_curve;
+    WallMap walls = standard_arena_walls(ArenaSpec{});
+    AssociationParams association;
+    FilterTuning filter;
+    InitialBelief initial;
+    MotionLimits motion;
+    ControllerGains gains;
+    Controller controller = FollowPath(square_path(ArenaSpec{}), 0);
+    double max_wheel_speed = 0.38;  ///< m/s: ≈170 rpm on 43.2 mm wheels
+    /// m: a wheel moving farther than this in one period is an encoder glitch (e.g. a
+    /// counter reset on the robot); that period's odometry is skipped and flagged.
+    double max_wheel_travel_per_step = 0.25;
+};
+
+/// One problem with a configuration: which field, what value, and why it was refused.
+struct ConfigIssue {
+    std::string field;   ///< e.g. "filter.q11"
+    std::string value;   ///< the offending value as text
+    std::string reason;  ///< e.g. "must be between 1e-15 and 1e+09"
+
+    std::string message() const;  ///< "filter.q11 = -1: must be …"
+};
+
+/// Everything wrong with `config` (empty when it is usable).
+std::vector<ConfigIssue> validate(const LoopConfig& config);
+
+/// Bounds accepted for every variance a user types (Q, R, P0): wide enough for the
+/// experiments' "very low" and "very high" settings, narrow enough to stay finite.
+inline constexpr double kMinUserVariance = 1e-15;
+inline constexpr double kMaxUserVariance = 1e9;
+
+}  // namespace legofeup

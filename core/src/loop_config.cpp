@@ -1,0 +1,172 @@
+#include "legofeup/core/loop_config.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <type_traits>
+#include <variant>
+
+namespace legofeup {
+namespace {
+
+std::string format_number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+class Checker {
+  public:
+    explicit Checker(std::vector<ConfigIssue>& issues) : issues_(issues) {}
+
+    void require(bool ok, const std::string& field, double value, const std::string& reason) {
+        if (!ok) {
+            issues_.push_back({field, format_number(value), reason});
+        }
+    }
+    void finite(const std::string& field, double value) {
+        require(std::isfinite(value), field, value, "must be a finite number");
+    }
+    void in_range(const std::string& field, double value, double low, double high) {
+        require(std::isfinite(value) && value >= low && value <= high, field, value,
+                "must be between " + format_number(low) + " and " + format_number(high));
+    }
+    void positive(const std::string& field, double value, double high) {
+        require(std::isfinite(value) && value > 0.0 && value <= high, field, value,
+                "must be greater than 0 and at most " + format_number(high));
+    }
+    void variance(const std::string& field, double value) {
+        in_range(field, value, kMinUserVariance, kMaxUserVariance);
+    }
+
+  private:
+    std::vector<ConfigIssue>& issues_;
+};
+
+void check_ir_curve(Checker& check, const SharpIrCurve& curve) {
+    check.positive("ir_curve.a", curve.a, 1.0);
+    check.positive("ir_curve.c_m", curve.c_m, 1e7);
+    check.finite("ir_curve.c_r", curve.c_r);
+    check.finite("ir_curve.b", curve.b);
+    check.positive("ir_curve.min_range", curve.min_range, 10.0);
+    check.require(curve.max_range > curve.min_range && curve.max_range <= 10.0,
+                  "ir_curve.max_range", curve.max_range,
+                  "must be greater than ir_curve.min_range and at most 10 m");
+    check.require(curve.peak_distance > 0.0 && curve.peak_distance <= curve.min_range,
+                  "ir_curve.peak_distance", curve.peak_distance,
+                  "must be greater than 0 and at most ir_curve.min_range");
+    check.in_range("ir_curve.adc_max", curve.adc_max, 1.0, 65535.0);
+    check.in_range("ir_curve.contact_adc", curve.contact_adc, 0.0, curve.adc_max);
+    // The fit must give positive, decreasing distances that the A/D can represent over the
+    // trusted range: its denominator D/a + b stays positive down to the peak distance.
+    check.require(curve.peak_distance / curve.a + curve.b > 0.0, "ir_curve.b", curve.b,
+                  "makes the fitted curve D = a·(C_M/(A + C_R) − b) non-monotonic in range");
+    const double near_adc = adc_from_distance(curve.min_range, curve);
+    const double far_adc = adc_from_distance(curve.max_range, curve);
+    check.require(near_adc <= curve.adc_max && far_adc >= 0.0, "ir_curve.c_m", curve.c_m,
+                  "puts the trusted range outside the A/D scale 0…adc_max");
+}
+
+void check_controller(Checker& check, const Controller& controller) {
+    std::visit(
+        [&](const auto& routine) {
+            using Routine = std::decay_t<decltype(routine)>;
+            if constexpr (std::is_same_v<Routine, GoXYTheta>) {
+                check.finite("controller.target.x", routine.target().x);
+                check.finite("controller.target.y", routine.target().y);
+                check.finite("controller.target.theta", routine.target().theta);
+            } else if constexpr (std::is_same_v<Routine, FollowLine>) {
+                check.require((routine.to() - routine.from()).norm() > 1e-6, "controller.to",
+                              routine.to().x(), "must differ from controller.from");
+            } else if constexpr (std::is_same_v<Routine, FollowCircle>) {
+                check.positive("controller.radius", routine.radius(), 1e3);
+            } else if constexpr (std::is_same_v<Routine, FollowPath>) {
+                for (std::size_t i = 0; i < routine.segments().size(); ++i) {
+                    const std::string field = "controller.path[" + std::to_string(i) + "]";
+                    if (const auto* line = std::get_if<LineSegment>(&routine.segments()[i])) {
+                        check.require((line->to - line->from).norm() > 1e-6, field + ".to",
+                                      line->to.x(), "a line segment must have a length");
+                    } else {
+                        const auto& arc = std::get<ArcSegment>(routine.segments()[i]);
+                        check.positive(field + ".radius", arc.radius, 1e3);
+                        check.positive(field + ".sweep", arc.sweep, 1e3);
+                    }
+                }
+            }
+        },
+        controller);
+}
+
+}  // namespace
+
+std::string ConfigIssue::message() const {
+    return field + " = " + value + ": " + reason;
+}
+
+std::vector<ConfigIssue> validate(const LoopConfig& config) {
+    std::vector<ConfigIssue> issues;
+    Checker check(issues);
+
+    check.positive("odometry.codo_right", config.odometry.codo_right, 1e6);
+    check.positive("odometry.codo_left", config.odometry.codo_left, 1e6);
+    check.positive("odometry.wheel_base", config.odometry.wheel_base, 10.0);
+
+    check.in_range("ir_mount.front_longitudinal", config.ir_mount.front_longitudinal, -1.0, 1.0);
+    check.in_range("ir_mount.rear_longitudinal", config.ir_mount.rear_longitudinal, -1.0, 1.0);
+    check.require(config.ir_mount.separation() > 1e-3, "ir_mount.front_longitudinal",
+                  config.ir_mount.front_longitudinal,
+                  "the front sensor must be at least 1 mm ahead of the rear one");
+    check.in_range("ir_mount.lateral_offset", config.ir_mount.lateral_offset, -1.0, 1.0);
+    check_ir_curve(check, config.ir_curve);
+
+    for (int i = 0; i < config.walls.size(); ++i) {
+        const Wall& wall = config.walls.wall(i);
+        const std::string field = "walls[" + std::to_string(i) + "] (" + wall.name + ")";
+        check.require(wall.start.allFinite() && wall.end.allFinite(), field + ".start",
+                      wall.start.x(), "wall end points must be finite");
+        check.require(config.walls.line(i).length > 1e-6, field + ".end", wall.end.x(),
+                      "a wall must have a length");
+    }
+
+    const AssociationParams& assoc = config.association;
+    check.in_range("association.segment_margin", assoc.segment_margin, 0.0, 10.0);
+    check.in_range("association.range_margin", assoc.range_margin, 0.0, 10.0);
+    check.positive("association.max_incidence", assoc.max_incidence, 0.5 * kPi);
+    check.positive("association.max_angle_error", assoc.max_angle_error, kPi);
+    check.positive("association.max_distance_error", assoc.max_distance_error, 10.0);
+
+    const FilterTuning& filter = config.filter;
+    check.variance("filter.q11", filter.q11);
+    check.variance("filter.q22", filter.q22);
+    check.variance("filter.r11", filter.r11);
+    check.variance("filter.r22", filter.r22);
+    check.require(filter.gate_probability > 0.0 && filter.gate_probability < 1.0,
+                  "filter.gate_probability", filter.gate_probability,
+                  "must be strictly between 0 and 1");
+    check.positive("filter.min_variance", filter.limits.min_variance, 1.0);
+    check.require(filter.limits.max_variance > filter.limits.min_variance
+                      && std::isfinite(filter.limits.max_variance),
+                  "filter.max_variance", filter.limits.max_variance,
+                  "must be finite and greater than filter.min_variance");
+
+    check.in_range("initial.x", config.initial.pose.x, -1e4, 1e4);
+    check.in_range("initial.y", config.initial.pose.y, -1e4, 1e4);
+    check.in_range("initial.theta", config.initial.pose.theta, -2.0 * kPi, 2.0 * kPi);
+    check.variance("initial.var_x", config.initial.var_x);
+    check.variance("initial.var_y", config.initial.var_y);
+    check.variance("initial.var_theta", config.initial.var_theta);
+
+    check.positive("motion.v_ref", config.motion.v_ref, 2.0);
+    check.positive("motion.w_ref", config.motion.w_ref, 20.0);
+    check.positive("gains.heading_gain", config.gains.heading_gain, 100.0);
+    check.positive("gains.cross_track_gain", config.gains.cross_track_gain, 1000.0);
+    check.positive("gains.distance_gain", config.gains.distance_gain, 100.0);
+    check.positive("gains.position_tolerance", config.gains.position_tolerance, 10.0);
+    check.positive("gains.heading_tolerance", config.gains.heading_tolerance, kPi);
+    check_controller(check, config.controller);
+
+    check.positive("max_wheel_speed", config.max_wheel_speed, 10.0);
+    check.positive("max_wheel_travel_per_step", config.max_wheel_travel_per_step, 10.0);
+    return issues;
+}
+
+}  // namespace legofeup
