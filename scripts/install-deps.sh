@@ -6,6 +6,9 @@ set -euo pipefail
 packages=(
     build-essential cmake ninja-build pkg-config clang-format
     libeigen3-dev                       # core: linear algebra
+    libbox2d-dev                        # sim: physics
+    libtomlplusplus-dev nlohmann-json3-dev  # lessons: configuration files, summaries
+    libcli11-dev libcairo2-dev fonts-dejavu-core  # legofeup-cli: options, PNG/SVG plots
     libgtest-dev libgmock-dev           # tests
     libbenchmark-dev                    # bench/
 )

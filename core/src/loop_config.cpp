@@ -42,28 +42,37 @@ class Checker {
     std::vector<ConfigIssue>& issues_;
 };
 
-void check_ir_curve(Checker& check, const SharpIrCurve& curve) {
-    check.positive("ir_curve.a", curve.a, 1.0);
-    check.positive("ir_curve.c_m", curve.c_m, 1e7);
-    check.finite("ir_curve.c_r", curve.c_r);
-    check.finite("ir_curve.b", curve.b);
-    check.positive("ir_curve.min_range", curve.min_range, 10.0);
-    check.require(curve.max_range > curve.min_range && curve.max_range <= 10.0,
-                  "ir_curve.max_range", curve.max_range,
-                  "must be greater than ir_curve.min_range and at most 10 m");
+void check_ir_curve(Checker& check, const SharpIrCurve& curve, const std::string& prefix) {
+    const std::string p = prefix + ".";
+    check.positive(p + "a", curve.a, 1.0);
+    check.positive(p + "c_m", curve.c_m, 1e7);
+    check.finite(p + "c_r", curve.c_r);
+    check.finite(p + "b", curve.b);
+    check.positive(p + "min_range", curve.min_range, 10.0);
+    check.require(curve.max_range > curve.min_range && curve.max_range <= 10.0, p + "max_range",
+                  curve.max_range, "must be greater than " + p + "min_range and at most 10 m");
     check.require(curve.peak_distance > 0.0 && curve.peak_distance <= curve.min_range,
-                  "ir_curve.peak_distance", curve.peak_distance,
-                  "must be greater than 0 and at most ir_curve.min_range");
-    check.in_range("ir_curve.adc_max", curve.adc_max, 1.0, 65535.0);
-    check.in_range("ir_curve.contact_adc", curve.contact_adc, 0.0, curve.adc_max);
+                  p + "peak_distance", curve.peak_distance,
+                  "must be greater than 0 and at most " + p + "min_range");
+    check.in_range(p + "adc_max", curve.adc_max, 1.0, 65535.0);
+    check.in_range(p + "contact_adc", curve.contact_adc, 0.0, curve.adc_max);
     // The fit must give positive, decreasing distances that the A/D can represent over the
     // trusted range: its denominator D/a + b stays positive down to the peak distance.
-    check.require(curve.peak_distance / curve.a + curve.b > 0.0, "ir_curve.b", curve.b,
+    check.require(curve.peak_distance / curve.a + curve.b > 0.0, p + "b", curve.b,
                   "makes the fitted curve D = a·(C_M/(A + C_R) − b) non-monotonic in range");
     const double near_adc = adc_from_distance(curve.min_range, curve);
     const double far_adc = adc_from_distance(curve.max_range, curve);
-    check.require(near_adc <= curve.adc_max && far_adc >= 0.0, "ir_curve.c_m", curve.c_m,
+    check.require(near_adc <= curve.adc_max && far_adc >= 0.0, p + "c_m", curve.c_m,
                   "puts the trusted range outside the A/D scale 0…adc_max");
+}
+
+void check_ir_mount(Checker& check, const IrMount& mount, const std::string& prefix) {
+    const std::string p = prefix + ".";
+    check.in_range(p + "front_longitudinal", mount.front_longitudinal, -1.0, 1.0);
+    check.in_range(p + "rear_longitudinal", mount.rear_longitudinal, -1.0, 1.0);
+    check.require(mount.separation() > 1e-3, p + "front_longitudinal", mount.front_longitudinal,
+                  "the front sensor must be at least 1 mm ahead of the rear one");
+    check.in_range(p + "lateral_offset", mount.lateral_offset, -1.0, 1.0);
 }
 
 void check_controller(Checker& check, const Controller& controller) {
@@ -98,6 +107,20 @@ void check_controller(Checker& check, const Controller& controller) {
 
 }  // namespace
 
+std::vector<ConfigIssue> validate(const SharpIrCurve& curve, const std::string& prefix) {
+    std::vector<ConfigIssue> issues;
+    Checker check(issues);
+    check_ir_curve(check, curve, prefix);
+    return issues;
+}
+
+std::vector<ConfigIssue> validate(const IrMount& mount, const std::string& prefix) {
+    std::vector<ConfigIssue> issues;
+    Checker check(issues);
+    check_ir_mount(check, mount, prefix);
+    return issues;
+}
+
 std::string ConfigIssue::message() const {
     return field + " = " + value + ": " + reason;
 }
@@ -110,13 +133,8 @@ std::vector<ConfigIssue> validate(const LoopConfig& config) {
     check.positive("odometry.codo_left", config.odometry.codo_left, 1e6);
     check.positive("odometry.wheel_base", config.odometry.wheel_base, 10.0);
 
-    check.in_range("ir_mount.front_longitudinal", config.ir_mount.front_longitudinal, -1.0, 1.0);
-    check.in_range("ir_mount.rear_longitudinal", config.ir_mount.rear_longitudinal, -1.0, 1.0);
-    check.require(config.ir_mount.separation() > 1e-3, "ir_mount.front_longitudinal",
-                  config.ir_mount.front_longitudinal,
-                  "the front sensor must be at least 1 mm ahead of the rear one");
-    check.in_range("ir_mount.lateral_offset", config.ir_mount.lateral_offset, -1.0, 1.0);
-    check_ir_curve(check, config.ir_curve);
+    check_ir_mount(check, config.ir_mount, "ir_mount");
+    check_ir_curve(check, config.ir_curve, "ir_curve");
 
     for (int i = 0; i < config.walls.size(); ++i) {
         const Wall& wall = config.walls.wall(i);

@@ -67,6 +67,11 @@ struct ConfigIssue {
 /// Everything wrong with `config` (empty when it is usable).
 std::vector<ConfigIssue> validate(const LoopConfig& config);
 
+/// The IR parts of validate(), for other owners of a curve or mount (the simulator's
+/// physical sensors); fields are named "<prefix>.<name>".
+std::vector<ConfigIssue> validate(const SharpIrCurve& curve, const std::string& prefix);
+std::vector<ConfigIssue> validate(const IrMount& mount, const std::string& prefix);
+
 /// Bounds accepted for every variance a user types (Q, R, P0): wide enough for the
 /// experiments' "very low" and "very high" settings, narrow enough to stay finite.
 inline constexpr double kMinUserVariance = 1e-15;

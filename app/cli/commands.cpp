@@ -1,0 +1,201 @@
+#include "commands.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "legofeup/core/angles.hpp"
+#include "legofeup/lessons/config_file.hpp"
+#include "legofeup/lessons/experiments.hpp"
+#include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/lockstep_run.hpp"
+#include "legofeup/lessons/run_summary.hpp"
+#include "legofeup/lessons/trace_csv.hpp"
+#include "progress_bar.hpp"
+#include "run_plots.hpp"
+
+namespace legofeup::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using lessons::InputError;
+using lessons::RunConfig;
+
+// Passes every step to several observers.
+class Observers final : public lessons::RunObserver {
+  public:
+    Observers(lessons::RunObserver& a, lessons::RunObserver& b) : a_(a), b_(b) {}
+    void on_step(const LoopSnapshot& snapshot, const sim::GroundTruth& truth) override {
+        a_.on_step(snapshot, truth);
+        b_.on_step(snapshot, truth);
+    }
+
+  private:
+    lessons::RunObserver& a_;
+    lessons::RunObserver& b_;
+};
+
+// Defaults, then the experiment's preset, then the configuration file, then the flags.
+RunConfig build_config(const RunOptions& options, std::string& title) {
+    RunConfig config;
+    title = "default configuration";
+    if (!options.experiment.empty()) {
+        const lessons::Experiment* experiment = lessons::find_experiment(options.experiment);
+        if (experiment == nullptr) {
+            throw InputError({{"--experiment", 0, "", options.experiment,
+                               "unknown experiment (choose a, b, c, d, e or f)"}});
+        }
+        config = experiment->config;
+        title = "experiment " + experiment->id + ": " + experiment->title;
+    }
+    if (!options.config_file.empty()) {
+        config = lessons::load_config_file(options.config_file, config);
+        title += " + " + fs::path(options.config_file).filename().string();
+    }
+    if (options.seed) {
+        config.seed = *options.seed;
+        config.origins["seed"] = {"--seed", 0, "seed"};
+    }
+    if (options.laps) {
+        config.laps = *options.laps;
+        config.origins["laps"] = {"--laps", 0, "laps"};
+    }
+    return config;
+}
+
+void report_problems(const InputError& error) {
+    for (const lessons::InputProblem& problem : error.problems()) {
+        std::cerr << "error: " << problem.message() << '\n';
+    }
+}
+
+// Writes through a temporary name and renames at the end, so an interrupted or failed run
+// never leaves a half-written file where a complete one was.
+class AtomicFile {
+  public:
+    explicit AtomicFile(fs::path path)
+        : path_(std::move(path)), partial_(path_.string() + ".partial"), out_(partial_) {}
+    std::ostream& stream() { return out_; }
+    bool good() const { return out_.good(); }
+    void commit() {
+        out_.close();
+        if (!out_) {
+            throw std::runtime_error("cannot write " + path_.string());
+        }
+        fs::rename(partial_, path_);
+    }
+
+  private:
+    fs::path path_;
+    fs::path partial_;
+    std::ofstream out_;
+};
+
+void print_summary(const lessons::ResolvedRun& run, const lessons::RunResult& result,
+                   const std::string& title) {
+    const RunMetrics& m = result.metrics;
+    std::printf("LegoFeup %s (seed %llu, %d lap%s)\n", title.c_str(),
+                static_cast<unsigned long long>(run.config.seed), run.config.laps,
+                run.config.laps == 1 ? "" : "s");
+    std::printf("  simulated %.1f s in %.3f s (%.0fx real time)%s\n", m.duration,
+                result.wall_seconds,
+                result.wall_seconds > 0 ? m.duration / result.wall_seconds : 0.0,
+                result.routine_finished ? "" : ", stopped at the time limit");
+    std::printf(
+        "  position error: RMS %.3f m, max %.3f m, final %.3f m (odometry only: final %.3f m)\n",
+        m.rms_position_error, m.max_position_error, m.final_position_error,
+        m.final_odometry_position_error);
+    std::printf("  heading error:  RMS %.2f deg, final %.2f deg\n",
+                radians_to_degrees(m.rms_heading_error), radians_to_degrees(m.final_heading_error));
+    std::printf("  wall updates: %llu applied, %llu rejected by the filter, %llu observations\n",
+                static_cast<unsigned long long>(m.updates_applied),
+                static_cast<unsigned long long>(m.updates_rejected),
+                static_cast<unsigned long long>(m.observations));
+    std::printf("  mean NEES %.2f; %.0f%% of steps inside the 95%% bounds [%.3f, %.3f]\n",
+                m.mean_nees, 100.0 * m.nees_inside_fraction, m.nees_bounds.lower,
+                m.nees_bounds.upper);
+}
+
+}  // namespace
+
+int run_command(const RunOptions& options) {
+    std::string title;
+    lessons::ResolvedRun run;
+    try {
+        run = lessons::resolve(build_config(options, title));
+    } catch (const InputError& error) {
+        report_problems(error);
+        return kExitBadInput;
+    }
+
+    const fs::path out(options.out_directory);
+    std::error_code error;
+    fs::create_directories(out, error);
+    if (error) {
+        std::cerr << "error: cannot create " << out.string() << ": " << error.message() << '\n';
+        return kExitOutputFailed;
+    }
+    try {
+        AtomicFile trace(out / "trace.csv");
+        if (!trace.good()) {
+            throw std::runtime_error("cannot write " + (out / "trace.csv").string());
+        }
+        lessons::TraceCsvWriter writer(trace.stream(), run.loop);
+        RunRecording recording;
+        Observers observers(writer, recording);
+        ProgressBar progress("run " + (options.experiment.empty() ? "" : options.experiment));
+        const lessons::RunResult result =
+            lessons::run_lockstep(run, &observers, [&](double simulated, double limit) {
+                char detail[64];
+                std::snprintf(detail, sizeof detail, "%.0f s simulated", simulated);
+                progress.update(simulated / limit, detail);
+            });
+        progress.finish();
+        trace.commit();
+
+        AtomicFile summary(out / "summary.json");
+        summary.stream() << lessons::run_summary(run, result, options.experiment, title).dump(2)
+                         << '\n';
+        summary.commit();
+        if (options.plots) {
+            write_run_plots(recording, run.world, out, "LegoFeup " + title);
+        }
+        if (!options.quiet) {
+            print_summary(run, result, title);
+            std::printf("Results in %s: trace.csv, summary.json%s\n", out.string().c_str(),
+                        options.plots ? ", trajectory, errors, covariance, ir_distances and "
+                                        "wheel_speeds (.png and .svg)"
+                                      : "");
+        }
+    } catch (const std::exception& failure) {
+        std::cerr << "error: " << failure.what() << '\n';
+        return kExitOutputFailed;
+    }
+    return kExitOk;
+}
+
+int experiments_command() {
+    for (const lessons::Experiment& experiment : lessons::legofeup_experiments()) {
+        std::printf("%s  %s\n   %s\n\n", experiment.id.c_str(), experiment.title.c_str(),
+                    experiment.instructions.c_str());
+    }
+    std::printf("Run one with: legofeup-cli run --experiment <id> --out <directory>\n");
+    return kExitOk;
+}
+
+int config_command(const RunOptions& options) {
+    std::string title;
+    try {
+        const RunConfig config = build_config(options, title);
+        lessons::resolve(config);  // refuse to print a configuration that would not run
+        std::cout << lessons::config_to_toml(config, "LegoFeup Lab — " + title);
+    } catch (const InputError& error) {
+        report_problems(error);
+        return kExitBadInput;
+    }
+    return kExitOk;
+}
+
+}  // namespace legofeup::cli

@@ -1,0 +1,33 @@
+#pragma once
+// The subcommands of legofeup-cli. Each returns the process exit code:
+// 0 success, 1 invalid input (configuration, files, options), 2 output could not be written.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace legofeup::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 1;
+inline constexpr int kExitOutputFailed = 2;
+
+struct RunOptions {
+    std::string experiment;  ///< "a" … "f", or empty for the defaults
+    std::string config_file;
+    std::optional<std::uint64_t> seed;
+    std::optional<int> laps;
+    std::string out_directory;
+    bool plots = true;
+    bool quiet = false;
+};
+
+int run_command(const RunOptions& options);
+
+/// Lists the experiments with their instructions.
+int experiments_command();
+
+/// Prints the configuration a run would use, as a TOML file to start from.
+int config_command(const RunOptions& options);
+
+}  // namespace legofeup::cli

@@ -1,0 +1,51 @@
+// legofeup-cli: runs the LegoFeup experiments headless and deterministically, for grading,
+// scripting and machines without a display.
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "legofeup/version.hpp"
+
+int main(int argc, char** argv) {
+    using namespace legofeup::cli;
+    CLI::App app{"LegoFeup Lab command line: run the EKF localisation experiments headless."};
+    app.set_version_flag("--version", std::string("legofeup-cli ") + legofeup::kVersion);
+    app.require_subcommand(1);
+
+    RunOptions options;
+    const auto add_config_options = [&](CLI::App* command) {
+        command->add_option("--experiment,-e", options.experiment,
+                            "Guided experiment a … f (its preset is applied first)");
+        command
+            ->add_option("--config,-c", options.config_file,
+                         "TOML configuration applied over the experiment's preset")
+            ->check(CLI::ExistingFile);
+        command->add_option("--seed,-s", options.seed, "Seed of every random stream");
+        command->add_option("--laps,-l", options.laps, "Laps of the square path")
+            ->check(CLI::Range(1, 1000));
+    };
+
+    CLI::App* run = app.add_subcommand("run", "Run one experiment and write its results");
+    add_config_options(run);
+    run->add_option("--out,-o", options.out_directory,
+                    "Directory for trace.csv, summary.json and the plots")
+        ->required();
+    run->add_flag("!--no-plots", options.plots, "Skip the PNG and SVG plots");
+    run->add_flag("--quiet,-q", options.quiet, "Print nothing on success");
+
+    app.add_subcommand("experiments", "List the guided experiments a … f");
+
+    CLI::App* config = app.add_subcommand(
+        "config", "Print the configuration a run would use, as a TOML file to edit");
+    add_config_options(config);
+
+    CLI11_PARSE(app, argc, argv);
+
+    if (app.got_subcommand("run")) {
+        return run_command(options);
+    }
+    if (app.got_subcommand("experiments")) {
+        return experiments_command();
+    }
+    return config_command(options);
+}

@@ -1,0 +1,190 @@
+#include "run_plots.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
+
+#include "plot/figure.hpp"
+
+namespace legofeup::cli {
+namespace {
+
+using plot::Band;
+using plot::Figure;
+using plot::Line;
+namespace colors = plot::colors;
+
+constexpr int kWidth = 1200;
+constexpr double kEllipseInterval = 5.0;  // s between the ellipses drawn on the trajectory
+constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+
+template <class Pick>
+std::vector<double> column(const std::vector<RunRecording::Step>& steps, Pick pick) {
+    std::vector<double> values;
+    values.reserve(steps.size());
+    for (const RunRecording::Step& step : steps) {
+        values.push_back(pick(step));
+    }
+    return values;
+}
+
+// The 1σ ellipse of the position block of P: semi-axes √λ along the eigenvectors.
+plot::Ellipse sigma_ellipse(const RunRecording::Step& step) {
+    const Eigen::Matrix2d block = step.covariance.topLeftCorner<2, 2>();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(block);
+    const Eigen::Vector2d axes = eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+    const Eigen::Vector2d major = eigen.eigenvectors().col(1);
+    plot::Ellipse e;
+    e.cx = step.estimate(kX);
+    e.cy = step.estimate(kY);
+    e.semi_major = axes(1);
+    e.semi_minor = axes(0);
+    e.angle = std::atan2(major.y(), major.x());
+    return e;
+}
+
+void trajectory(const RunRecording& rec, const sim::WorldSpec& world, const std::string& base,
+                const std::string& title) {
+    Figure figure(title + " — trajectory", 1, kWidth, 1100);
+    plot::Panel& p = figure.panel(0);
+    p.title = "True, estimated (with 1σ ellipses every 5 s) and odometry-only paths";
+    p.x_label = "x (m)";
+    p.y_label = "y (m)";
+    p.equal_aspect = true;
+    for (const Wall& wall : world.walls) {
+        p.segments.push_back({wall.start.x(), wall.start.y(), wall.end.x(), wall.end.y()});
+    }
+    const auto& s = rec.steps();
+    p.lines.push_back({column(s, [](auto& k) { return k.odometry.x; }),
+                       column(s, [](auto& k) { return k.odometry.y; }), colors::kOdometry, 1.5,
+                       true, "odometry only"});
+    p.lines.push_back({column(s, [](auto& k) { return k.truth.x; }),
+                       column(s, [](auto& k) { return k.truth.y; }), colors::kTruth, 2.0, false,
+                       "true"});
+    p.lines.push_back({column(s, [](auto& k) { return k.estimate(kX); }),
+                       column(s, [](auto& k) { return k.estimate(kY); }), colors::kEstimate, 1.5,
+                       false, "estimate (EKF)"});
+    double next = 0.0;
+    for (const RunRecording::Step& step : s) {
+        if (step.time >= next) {
+            p.ellipses.push_back(sigma_ellipse(step));
+            next += kEllipseInterval;
+        }
+    }
+    figure.write(base);
+}
+
+void errors(const RunRecording& rec, const std::string& base, const std::string& title) {
+    Figure figure(title + " — estimation error", 3, kWidth, 1000);
+    const auto& s = rec.steps();
+    const auto t = column(s, [](auto& k) { return k.time; });
+    struct Component {
+        const char* name;
+        const char* unit;
+        int index;
+    };
+    const Component components[] = {{"x", "m", kX}, {"y", "m", kY}, {"θ", "rad", kTheta}};
+    for (int row = 0; row < 3; ++row) {
+        const Component c = components[row];
+        plot::Panel& p = figure.panel(row);
+        p.title = std::string("Error in ") + c.name + " (true − estimate) with ±σ";
+        p.x_label = "t (s)";
+        p.y_label = std::string(c.name) + " error (" + c.unit + ")";
+        const auto sigma = column(
+            s, [&](auto& k) { return std::sqrt(std::max(0.0, k.covariance(c.index, c.index))); });
+        std::vector<double> lower(sigma.size());
+        for (std::size_t i = 0; i < sigma.size(); ++i) {
+            lower[i] = -sigma[i];
+        }
+        p.bands.push_back({t, lower, sigma, colors::kBand, "±σ"});
+        p.lines.push_back({t,
+                           column(s,
+                                  [&](auto& k) {
+                                      const double truth[] = {k.truth.x, k.truth.y, k.truth.theta};
+                                      const double error = truth[c.index] - k.estimate(c.index);
+                                      return c.index == kTheta ? wrap_angle(error) : error;
+                                  }),
+                           colors::kEstimate, 1.5, false, "error"});
+    }
+    figure.write(base);
+}
+
+void covariance(const RunRecording& rec, const std::string& base, const std::string& title) {
+    Figure figure(title + " — covariance", 3, kWidth, 1000);
+    const auto& s = rec.steps();
+    const auto t = column(s, [](auto& k) { return k.time; });
+    const char* names[] = {"Px (m²)", "Py (m²)", "Pθ (rad²)"};
+    for (int row = 0; row < 3; ++row) {
+        plot::Panel& p = figure.panel(row);
+        p.title = std::string("Variance ") + names[row];
+        p.x_label = "t (s)";
+        p.y_label = names[row];
+        p.log_y = true;
+        p.lines.push_back({t, column(s, [&](auto& k) { return k.covariance(row, row); }),
+                           colors::kEstimate, 1.5, false, ""});
+    }
+    figure.write(base);
+}
+
+void ir_distances(const RunRecording& rec, const std::string& base, const std::string& title) {
+    Figure figure(title + " — IR distances", 1, kWidth, 520);
+    plot::Panel& p = figure.panel(0);
+    p.title = "IR distances ds1 (front) and ds2 (rear), in range only";
+    p.x_label = "t (s)";
+    p.y_label = "distance (m)";
+    p.y_min = 0.0;
+    p.y_max = 0.32;
+    const auto& s = rec.steps();
+    const auto t = column(s, [](auto& k) { return k.time; });
+    p.lines.push_back({t, column(s, [](auto& k) { return k.ir_distance[0]; }), colors::kFront, 1.2,
+                       false, "ds1 (front)"});
+    p.lines.push_back({t, column(s, [](auto& k) { return k.ir_distance[1]; }), colors::kRear, 1.2,
+                       false, "ds2 (rear)"});
+    figure.write(base);
+}
+
+void wheel_speeds(const RunRecording& rec, const std::string& base, const std::string& title) {
+    Figure figure(title + " — wheel speeds", 1, kWidth, 520);
+    plot::Panel& p = figure.panel(0);
+    p.title = "Commanded wheel speeds V1 (right) and V2 (left)";
+    p.x_label = "t (s)";
+    p.y_label = "speed (m/s)";
+    const auto& s = rec.steps();
+    const auto t = column(s, [](auto& k) { return k.time; });
+    p.lines.push_back({t, column(s, [](auto& k) { return k.wheels.right; }), colors::kFront, 1.2,
+                       false, "V1 (right)"});
+    p.lines.push_back({t, column(s, [](auto& k) { return k.wheels.left; }), colors::kRear, 1.2,
+                       false, "V2 (left)"});
+    figure.write(base);
+}
+
+}  // namespace
+
+void RunRecording::on_step(const LoopSnapshot& snapshot, const sim::GroundTruth& truth) {
+    Step step;
+    step.time = snapshot.time;
+    step.truth = truth.pose;
+    step.estimate = snapshot.estimate;
+    step.covariance = snapshot.covariance;
+    step.odometry = snapshot.odometry_pose;
+    for (std::size_t i = 0; i < 2; ++i) {
+        const IrDistance& reading = snapshot.ir[i].reading;
+        step.ir_distance[i] = reading.in_range() ? reading.distance : kNone;
+    }
+    step.wheels = snapshot.wheels;
+    steps_.push_back(step);
+}
+
+std::vector<std::string> write_run_plots(const RunRecording& recording, const sim::WorldSpec& world,
+                                         const std::filesystem::path& directory,
+                                         const std::string& title) {
+    const auto path = [&](const char* name) { return (directory / name).string(); };
+    trajectory(recording, world, path("trajectory"), title);
+    errors(recording, path("errors"), title);
+    covariance(recording, path("covariance"), title);
+    ir_distances(recording, path("ir_distances"), title);
+    wheel_speeds(recording, path("wheel_speeds"), title);
+    return {"trajectory", "errors", "covariance", "ir_distances", "wheel_speeds"};
+}
+
+}  // namespace legofeup::cli

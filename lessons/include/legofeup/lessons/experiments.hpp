@@ -1,0 +1,30 @@
+#pragma once
+// The guided experiments a–f as data: resources/experiments/legofeup.toml, built into the
+// programs. Each one is a title, instructions, the expected conclusion, and a configuration.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "legofeup/lessons/run_config.hpp"
+
+namespace legofeup::lessons {
+
+struct Experiment {
+    std::string id;  ///< "a" … "f"
+    std::string title;
+    std::string instructions;
+    std::string expectation;  ///< the conclusion the run should lead to
+    RunConfig config;         ///< defaults + the file's base + this experiment's overlay
+};
+
+/// The experiments of the LegoFeup lesson, in order (parsed once).
+const std::vector<Experiment>& legofeup_experiments();
+
+/// The experiment with this id, or nullptr.
+const Experiment* find_experiment(std::string_view id);
+
+/// Parses an experiments document (the built-in one, or a teacher's). Throws InputError.
+std::vector<Experiment> parse_experiments(std::string_view text, const std::string& source);
+
+}  // namespace legofeup::lessons

@@ -1,0 +1,100 @@
+#pragma once
+// A complete description of one run — what the GUI's configuration panel shows and what a
+// TOML configuration file or an experiment preset sets — and its resolution into the values
+// the loop and the simulator take.
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "legofeup/core/loop_config.hpp"
+#include "legofeup/sim/robot_spec.hpp"
+#include "legofeup/sim/simulator.hpp"
+#include "legofeup/sim/world.hpp"
+
+namespace legofeup::lessons {
+
+/// The control routine and its parameters (the [control] section).
+struct RoutineSpec {
+    enum class Kind : std::uint8_t { Square, Line, Circle, Goto, Manual };
+    Kind kind = Kind::Square;
+    Vector2 line_from{-1.0, -1.0};
+    Vector2 line_to{1.0, -1.0};
+    Vector2 circle_centre{0.0, 0.0};
+    double circle_radius = 0.5;
+    bool circle_clockwise = false;
+    Pose2 goto_target{0.0, 0.0, 0.0};
+};
+
+/// How the robot is built as far as the filter knows (the [robot] section). The simulated
+/// robot has the same nominal geometry plus the [simulator] section's errors.
+struct RobotGeometry {
+    double wheel_diameter = 0.0432;  ///< m
+    double wheel_base = 0.12;        ///< m
+    double counts_per_turn = 360.0;
+    double codo_right = 0.0;  ///< counts per metre; 0: from the diameter and counts per turn
+    double codo_left = 0.0;
+    IrMount ir_mount;
+};
+
+/// A pose whose parts default to another pose (the world's start) unless set.
+struct PoseOverride {
+    std::optional<double> x;
+    std::optional<double> y;
+    std::optional<double> theta;
+
+    Pose2 applied_to(const Pose2& base) const {
+        return {x.value_or(base.x), y.value_or(base.y), theta.value_or(base.theta)};
+    }
+};
+
+/// Where a setting's value came from, to point at it in error messages.
+struct SettingOrigin {
+    std::string source;  ///< file name, "experiment c", "--seed", …
+    int line = 0;
+    std::string key;  ///< as written, e.g. "filter.q11"
+};
+
+struct RunConfig {
+    std::uint64_t seed = 1;
+    int laps = 2;            ///< laps of the square path
+    double duration = 0.0;   ///< simulated seconds for other routines; 0: 200 s per lap
+    std::string world_file;  ///< empty: the built-in standard arena
+
+    FilterTuning filter;
+    InitialBelief initial;      ///< P0; its pose is the world's start with `initial_pose`
+    PoseOverride initial_pose;  ///< where the filter believes the robot starts
+    RoutineSpec routine;
+    MotionLimits motion;
+    ControllerGains gains;
+    double max_wheel_speed = 0.38;
+    RobotGeometry robot;
+    SharpIrCurve ir_curve;
+    AssociationParams association;
+
+    /// The simulated robot: its errors, noise, body and motors. Its geometry fields are
+    /// taken from `robot` and `ir_curve` when the run is resolved.
+    sim::RobotSpec physical;
+    sim::SimulatorSettings simulator;
+    PoseOverride true_start;  ///< where the robot really starts (default: the world's start)
+
+    /// Setting field name → where its value was set (filled by the readers).
+    std::map<std::string, SettingOrigin> origins;
+};
+
+/// A run ready to execute: everything derived, cross-checked and validated.
+struct ResolvedRun {
+    RunConfig config;
+    sim::WorldSpec world;
+    LoopConfig loop;
+    sim::RobotSpec robot;
+    Pose2 true_start;
+    double max_duration = 0.0;  ///< simulated seconds after which the run stops regardless
+};
+
+/// Loads the world, derives the loop's and the simulator's parameters and validates all of
+/// them. Throws InputError naming each bad setting and where it was set.
+ResolvedRun resolve(const RunConfig& config);
+
+}  // namespace legofeup::lessons

@@ -1,0 +1,20 @@
+#pragma once
+// summary.json: the full configuration of a run (with its seed and world) and its metrics.
+
+#include <nlohmann/json.hpp>
+#include <string_view>
+
+#include "legofeup/lessons/lockstep_run.hpp"
+#include "legofeup/lessons/run_config.hpp"
+
+namespace legofeup::lessons {
+
+/// Every setting, nested by section as in the TOML files.
+nlohmann::json config_to_json(const RunConfig& config);
+
+nlohmann::json metrics_to_json(const RunMetrics& metrics);
+
+nlohmann::json run_summary(const ResolvedRun& run, const RunResult& result,
+                           std::string_view experiment, std::string_view title);
+
+}  // namespace legofeup::lessons

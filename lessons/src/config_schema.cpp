@@ -1,0 +1,408 @@
+#include "legofeup/lessons/config_schema.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "legofeup/core/angles.hpp"
+
+namespace legofeup::lessons {
+namespace {
+
+using Access = std::function<double&(RunConfig&)>;
+
+// A real-valued setting stored as `stored = written × scale` (degrees → radians).
+Setting real(std::string key, std::string field, std::string help, Access access,
+             double scale = 1.0) {
+    Setting s{std::move(key), std::move(field), std::move(help), SettingType::Real, {}, {}, {}, {}};
+    s.get = [access, scale](const RunConfig& c) -> SettingValue {
+        RunConfig copy = c;
+        return access(copy) / scale;
+    };
+    s.set = [access, scale](RunConfig& c, const SettingValue& v) {
+        access(c) = std::get<double>(v) * scale;
+    };
+    return s;
+}
+
+Setting degrees(std::string key, std::string field, std::string help, Access access) {
+    return real(std::move(key), std::move(field), std::move(help), std::move(access), kPi / 180.0);
+}
+
+Setting boolean(std::string key, std::string field, std::string help,
+                std::function<bool&(RunConfig&)> access) {
+    Setting s{
+        std::move(key), std::move(field), std::move(help), SettingType::Boolean, {}, {}, {}, {}};
+    s.get = [access](const RunConfig& c) -> SettingValue {
+        RunConfig copy = c;
+        return access(copy);
+    };
+    s.set = [access](RunConfig& c, const SettingValue& v) { access(c) = std::get<bool>(v); };
+    return s;
+}
+
+Setting point(std::string key, std::string field, std::string help,
+              std::function<Vector2&(RunConfig&)> access) {
+    Setting s{
+        std::move(key), std::move(field), std::move(help), SettingType::Point, {}, {}, {}, {}};
+    s.get = [access](const RunConfig& c) -> SettingValue {
+        RunConfig copy = c;
+        return access(copy);
+    };
+    s.set = [access](RunConfig& c, const SettingValue& v) { access(c) = std::get<Vector2>(v); };
+    return s;
+}
+
+// One part of a pose override (the world's start pose unless set).
+Setting pose_part(std::string key, std::string field, std::string help,
+                  PoseOverride RunConfig::*pose, std::optional<double> PoseOverride::*part,
+                  double scale = 1.0) {
+    Setting s{std::move(key), std::move(field), std::move(help), SettingType::Real, {}, {}, {}, {}};
+    s.get = [pose, part, scale](const RunConfig& c) -> SettingValue {
+        return (c.*pose.*part).value_or(0.0) / scale;
+    };
+    s.set = [pose, part, scale](RunConfig& c, const SettingValue& v) {
+        c.*pose.*part = std::get<double>(v) * scale;
+    };
+    s.is_set = [pose, part](const RunConfig& c) { return (c.*pose.*part).has_value(); };
+    return s;
+}
+
+const char* routine_name(RoutineSpec::Kind kind) {
+    switch (kind) {
+        case RoutineSpec::Kind::Square:
+            return "square";
+        case RoutineSpec::Kind::Line:
+            return "line";
+        case RoutineSpec::Kind::Circle:
+            return "circle";
+        case RoutineSpec::Kind::Goto:
+            return "goto";
+        case RoutineSpec::Kind::Manual:
+            return "manual";
+    }
+    return "square";
+}
+
+std::vector<Setting> make_settings() {
+    std::vector<Setting> s;
+
+    Setting seed{"seed",
+                 "seed",
+                 "seed of every random stream of the run (0 … 2^63−1)",
+                 SettingType::Integer,
+                 {},
+                 {},
+                 {},
+                 {}};
+    seed.get = [](const RunConfig& c) -> SettingValue { return static_cast<std::int64_t>(c.seed); };
+    seed.set = [](RunConfig& c, const SettingValue& v) {
+        c.seed = static_cast<std::uint64_t>(std::get<std::int64_t>(v));
+    };
+    s.push_back(seed);
+    Setting laps{"laps", "laps", "laps of the square path (1 … 1000)", SettingType::Integer, {}, {},
+                 {},     {}};
+    laps.get = [](const RunConfig& c) -> SettingValue { return std::int64_t{c.laps}; };
+    laps.set = [](RunConfig& c, const SettingValue& v) {
+        c.laps = static_cast<int>(std::get<std::int64_t>(v));
+    };
+    s.push_back(laps);
+    s.push_back(real("duration", "duration",
+                     "simulated seconds for routines other than the square; 0: 200 s per lap",
+                     [](RunConfig& c) -> double& { return c.duration; }));
+    Setting world{"world",
+                  "world",
+                  "world file (relative to this file); empty: built-in arena",
+                  SettingType::Text,
+                  {},
+                  {},
+                  {},
+                  {}};
+    world.get = [](const RunConfig& c) -> SettingValue { return c.world_file; };
+    world.set = [](RunConfig& c, const SettingValue& v) {
+        c.world_file = std::get<std::string>(v);
+    };
+    s.push_back(world);
+
+    // [filter] — the EKF's noise model (paper: Q over [ε_d, ε_Δθ], R over [ε_ds1, ε_ds2]).
+    s.push_back(real("filter.q11", "filter.q11", "Q11: variance of ε_d per 50 ms period, m²",
+                     [](RunConfig& c) -> double& { return c.filter.q11; }));
+    s.push_back(real("filter.q22", "filter.q22", "Q22: variance of ε_Δθ per period, rad²",
+                     [](RunConfig& c) -> double& { return c.filter.q22; }));
+    s.push_back(real("filter.r11", "filter.r11", "R11: variance of the front IR distance, m²",
+                     [](RunConfig& c) -> double& { return c.filter.r11; }));
+    s.push_back(real("filter.r22", "filter.r22", "R22: variance of the rear IR distance, m²",
+                     [](RunConfig& c) -> double& { return c.filter.r22; }));
+    s.push_back(boolean("filter.wall_updates", "filter.wall_updates",
+                        "false: odometry only (walls are associated but never used)",
+                        [](RunConfig& c) -> bool& { return c.filter.wall_updates; }));
+    s.push_back(boolean("filter.gate", "filter.gate_enabled",
+                        "reject updates whose NIS exceeds the χ²(2) gate",
+                        [](RunConfig& c) -> bool& { return c.filter.gate_enabled; }));
+    s.push_back(real("filter.gate_probability", "filter.gate_probability",
+                     "probability of the Mahalanobis gate, in (0, 1)",
+                     [](RunConfig& c) -> double& { return c.filter.gate_probability; }));
+    s.push_back(real("filter.min_variance", "filter.min_variance", "floor on every variance of P",
+                     [](RunConfig& c) -> double& { return c.filter.limits.min_variance; }));
+    s.push_back(real("filter.max_variance", "filter.max_variance", "ceiling on every variance of P",
+                     [](RunConfig& c) -> double& { return c.filter.limits.max_variance; }));
+
+    // [initial] — the belief the filter starts from.
+    s.push_back(pose_part("initial.x", "initial.x", "believed start x, m (default: world start)",
+                          &RunConfig::initial_pose, &PoseOverride::x));
+    s.push_back(pose_part("initial.y", "initial.y", "believed start y, m (default: world start)",
+                          &RunConfig::initial_pose, &PoseOverride::y));
+    s.push_back(pose_part("initial.heading_deg", "initial.theta",
+                          "believed start heading, ° (default: world start)",
+                          &RunConfig::initial_pose, &PoseOverride::theta, kPi / 180.0));
+    s.push_back(real("initial.var_x", "initial.var_x", "P0: variance of x, m²",
+                     [](RunConfig& c) -> double& { return c.initial.var_x; }));
+    s.push_back(real("initial.var_y", "initial.var_y", "P0: variance of y, m²",
+                     [](RunConfig& c) -> double& { return c.initial.var_y; }));
+    s.push_back(real("initial.var_theta", "initial.var_theta", "P0: variance of θ, rad²",
+                     [](RunConfig& c) -> double& { return c.initial.var_theta; }));
+
+    // [control] — the path-control routine.
+    Setting routine{"control.routine",
+                    "control.routine",
+                    "square, line, circle, goto or manual",
+                    SettingType::Choice,
+                    {"square", "line", "circle", "goto", "manual"},
+                    {},
+                    {},
+                    {}};
+    routine.get = [](const RunConfig& c) -> SettingValue {
+        return std::string(routine_name(c.routine.kind));
+    };
+    routine.set = [](RunConfig& c, const SettingValue& v) {
+        const std::string& name = std::get<std::string>(v);
+        for (auto kind :
+             {RoutineSpec::Kind::Square, RoutineSpec::Kind::Line, RoutineSpec::Kind::Circle,
+              RoutineSpec::Kind::Goto, RoutineSpec::Kind::Manual}) {
+            if (name == routine_name(kind)) {
+                c.routine.kind = kind;
+            }
+        }
+    };
+    s.push_back(routine);
+    s.push_back(real("control.v_ref", "motion.v_ref", "V_ref: reference speed, m/s",
+                     [](RunConfig& c) -> double& { return c.motion.v_ref; }));
+    s.push_back(real("control.w_ref", "motion.w_ref", "W_ref: largest turn rate, rad/s",
+                     [](RunConfig& c) -> double& { return c.motion.w_ref; }));
+    s.push_back(real("control.heading_gain", "gains.heading_gain",
+                     "k_θ: W = k_θ·heading error, 1/s",
+                     [](RunConfig& c) -> double& { return c.gains.heading_gain; }));
+    s.push_back(real("control.cross_track_gain", "gains.cross_track_gain",
+                     "k_e: approach angle atan(k_e·offset), 1/m",
+                     [](RunConfig& c) -> double& { return c.gains.cross_track_gain; }));
+    s.push_back(real("control.distance_gain", "gains.distance_gain",
+                     "k_ρ: GoXYTheta slows to k_ρ·distance, 1/s",
+                     [](RunConfig& c) -> double& { return c.gains.distance_gain; }));
+    s.push_back(real("control.position_tolerance", "gains.position_tolerance",
+                     "GoXYTheta arrival distance, m",
+                     [](RunConfig& c) -> double& { return c.gains.position_tolerance; }));
+    s.push_back(degrees("control.heading_tolerance_deg", "gains.heading_tolerance",
+                        "GoXYTheta final heading tolerance, °",
+                        [](RunConfig& c) -> double& { return c.gains.heading_tolerance; }));
+    s.push_back(real("control.max_wheel_speed", "max_wheel_speed", "wheel speed limit, m/s",
+                     [](RunConfig& c) -> double& { return c.max_wheel_speed; }));
+    s.push_back(point("control.line_from", "controller.from", "line: first point [x, y], m",
+                      [](RunConfig& c) -> Vector2& { return c.routine.line_from; }));
+    s.push_back(point("control.line_to", "controller.to", "line: second point [x, y], m",
+                      [](RunConfig& c) -> Vector2& { return c.routine.line_to; }));
+    s.push_back(point("control.circle_centre", "controller.centre", "circle: centre [x, y], m",
+                      [](RunConfig& c) -> Vector2& { return c.routine.circle_centre; }));
+    s.push_back(real("control.circle_radius", "controller.radius", "circle: radius, m",
+                     [](RunConfig& c) -> double& { return c.routine.circle_radius; }));
+    s.push_back(boolean("control.circle_clockwise", "controller.clockwise",
+                        "circle: true for clockwise",
+                        [](RunConfig& c) -> bool& { return c.routine.circle_clockwise; }));
+    s.push_back(real("control.goto_x", "controller.target.x", "goto: target x, m",
+                     [](RunConfig& c) -> double& { return c.routine.goto_target.x; }));
+    s.push_back(real("control.goto_y", "controller.target.y", "goto: target y, m",
+                     [](RunConfig& c) -> double& { return c.routine.goto_target.y; }));
+    s.push_back(degrees("control.goto_heading_deg", "controller.target.theta",
+                        "goto: final heading, °",
+                        [](RunConfig& c) -> double& { return c.routine.goto_target.theta; }));
+
+    // [robot] — the robot as the filter assumes it is built.
+    s.push_back(real("robot.wheel_diameter", "robot.wheel_diameter", "wheel diameter, m",
+                     [](RunConfig& c) -> double& { return c.robot.wheel_diameter; }));
+    s.push_back(real("robot.wheel_base", "odometry.wheel_base", "b: distance between the wheels, m",
+                     [](RunConfig& c) -> double& { return c.robot.wheel_base; }));
+    s.push_back(real("robot.counts_per_turn", "robot.counts_per_turn",
+                     "encoder counts per wheel turn",
+                     [](RunConfig& c) -> double& { return c.robot.counts_per_turn; }));
+    s.push_back(real("robot.codo_right", "odometry.codo_right",
+                     "Codo1: right wheel counts per metre; 0: from the diameter",
+                     [](RunConfig& c) -> double& { return c.robot.codo_right; }));
+    s.push_back(real("robot.codo_left", "odometry.codo_left",
+                     "Codo2: left wheel counts per metre; 0: from the diameter",
+                     [](RunConfig& c) -> double& { return c.robot.codo_left; }));
+    s.push_back(real("robot.ir_front", "ir_mount.front_longitudinal",
+                     "front IR sensor ahead of the axle, m",
+                     [](RunConfig& c) -> double& { return c.robot.ir_mount.front_longitudinal; }));
+    s.push_back(real("robot.ir_rear", "ir_mount.rear_longitudinal",
+                     "rear IR sensor ahead of the axle (negative: behind), m",
+                     [](RunConfig& c) -> double& { return c.robot.ir_mount.rear_longitudinal; }));
+    s.push_back(real("robot.ir_lateral", "ir_mount.lateral_offset",
+                     "IR sensors' distance from the centre line (right side), m",
+                     [](RunConfig& c) -> double& { return c.robot.ir_mount.lateral_offset; }));
+
+    // [ir_curve] — eq. 2, D = a·(C_M/(A + C_R) − b), and its trusted range.
+    s.push_back(real("ir_curve.a", "ir_curve.a", "a: scale of the fit, m per fit unit",
+                     [](RunConfig& c) -> double& { return c.ir_curve.a; }));
+    s.push_back(real("ir_curve.c_m", "ir_curve.c_m", "C_M: constant of multiplication",
+                     [](RunConfig& c) -> double& { return c.ir_curve.c_m; }));
+    s.push_back(real("ir_curve.c_r", "ir_curve.c_r", "C_R: constant of linearisation",
+                     [](RunConfig& c) -> double& { return c.ir_curve.c_r; }));
+    s.push_back(real("ir_curve.b", "ir_curve.b", "b: offset of the fit, fit units",
+                     [](RunConfig& c) -> double& { return c.ir_curve.b; }));
+    s.push_back(real("ir_curve.min_range", "ir_curve.min_range", "closest trusted reading, m",
+                     [](RunConfig& c) -> double& { return c.ir_curve.min_range; }));
+    s.push_back(real("ir_curve.max_range", "ir_curve.max_range", "farthest trusted reading, m",
+                     [](RunConfig& c) -> double& { return c.ir_curve.max_range; }));
+    s.push_back(real("ir_curve.peak_distance", "ir_curve.peak_distance",
+                     "the sensor's output peaks here and folds back below, m",
+                     [](RunConfig& c) -> double& { return c.ir_curve.peak_distance; }));
+    s.push_back(real("ir_curve.contact_adc", "ir_curve.contact_adc",
+                     "A/D value with the target touching the sensor",
+                     [](RunConfig& c) -> double& { return c.ir_curve.contact_adc; }));
+
+    // [association] — Fig. 4.
+    s.push_back(real("association.segment_margin", "association.segment_margin",
+                     "predicted beams may miss a wall's end by this much, m",
+                     [](RunConfig& c) -> double& { return c.association.segment_margin; }));
+    s.push_back(real("association.range_margin", "association.range_margin",
+                     "predicted beams may exceed the IR range by this much, m",
+                     [](RunConfig& c) -> double& { return c.association.range_margin; }));
+    s.push_back(degrees("association.max_incidence_deg", "association.max_incidence",
+                        "walls seen more obliquely are not used, °",
+                        [](RunConfig& c) -> double& { return c.association.max_incidence; }));
+    s.push_back(degrees("association.max_angle_error_deg", "association.max_angle_error",
+                        "largest accepted ObsAng error, °",
+                        [](RunConfig& c) -> double& { return c.association.max_angle_error; }));
+    s.push_back(real("association.max_distance_error", "association.max_distance_error",
+                     "largest accepted wall distance error, m",
+                     [](RunConfig& c) -> double& { return c.association.max_distance_error; }));
+
+    // [simulator] — the simulated robot's errors, noise, body and motors.
+    const auto physical = [&s](std::string name, std::string help,
+                               std::function<double&(RunConfig&)> access) {
+        s.push_back(
+            real("simulator." + name, "simulator." + name, std::move(help), std::move(access)));
+    };
+    physical("wheel_diameter_ratio", "E_d = D_right/D_left of the real wheels",
+             [](RunConfig& c) -> double& { return c.physical.wheel_diameter_ratio; });
+    physical("wheel_base_ratio", "E_b = real / nominal wheel base",
+             [](RunConfig& c) -> double& { return c.physical.wheel_base_ratio; });
+    physical("slip_noise", "random wheel slip, σ² = slip_noise²·distance, m^½",
+             [](RunConfig& c) -> double& { return c.physical.slip_noise; });
+    physical("ir_noise", "σ of Gaussian noise on each IR distance, m",
+             [](RunConfig& c) -> double& { return c.physical.ir_noise; });
+    physical("ir_period", "IR update period (value held in between), s",
+             [](RunConfig& c) -> double& { return c.physical.ir_period; });
+    physical("ir_ray_length", "the IR sensors see nothing beyond this, m",
+             [](RunConfig& c) -> double& { return c.physical.ir_ray_length; });
+    physical("motor_time_constant", "first-order motor response, s",
+             [](RunConfig& c) -> double& { return c.physical.motor_time_constant; });
+    physical("max_motor_rpm", "motor no-load speed, rpm",
+             [](RunConfig& c) -> double& { return c.physical.max_motor_rpm; });
+    physical("mass", "robot mass, kg", [](RunConfig& c) -> double& { return c.physical.mass; });
+    physical("traction", "tyre friction coefficient μ",
+             [](RunConfig& c) -> double& { return c.physical.traction; });
+    physical("wheel_load", "share of the weight on the driven wheels",
+             [](RunConfig& c) -> double& { return c.physical.wheel_load; });
+    physical("chassis_front", "chassis extent ahead of the axle, m",
+             [](RunConfig& c) -> double& { return c.physical.chassis_front; });
+    physical("chassis_rear", "chassis extent behind the axle, m",
+             [](RunConfig& c) -> double& { return c.physical.chassis_rear; });
+    physical("chassis_half_width", "half the chassis width with wheels, m",
+             [](RunConfig& c) -> double& { return c.physical.chassis_half_width; });
+    physical("physics_rate", "physics steps per second, Hz",
+             [](RunConfig& c) -> double& { return c.simulator.physics_rate; });
+    physical("control_period", "control period of the loop, s",
+             [](RunConfig& c) -> double& { return c.simulator.control_period; });
+    s.push_back(pose_part("simulator.start_x", "simulator.start_x",
+                          "where the robot really starts, m (default: world start)",
+                          &RunConfig::true_start, &PoseOverride::x));
+    s.push_back(pose_part("simulator.start_y", "simulator.start_y",
+                          "real start y, m (default: world start)", &RunConfig::true_start,
+                          &PoseOverride::y));
+    s.push_back(pose_part("simulator.start_heading_deg", "simulator.start_heading",
+                          "real start heading, ° (default: world start)", &RunConfig::true_start,
+                          &PoseOverride::theta, kPi / 180.0));
+    return s;
+}
+
+}  // namespace
+
+std::string Setting::section() const {
+    const auto dot = key.find('.');
+    return dot == std::string::npos ? std::string() : key.substr(0, dot);
+}
+
+std::string Setting::name() const {
+    const auto dot = key.find('.');
+    return dot == std::string::npos ? key : key.substr(dot + 1);
+}
+
+const std::vector<Setting>& run_settings() {
+    static const std::vector<Setting> settings = make_settings();
+    return settings;
+}
+
+const Setting* find_setting_by_key(const std::string& key) {
+    for (const Setting& setting : run_settings()) {
+        if (setting.key == key) {
+            return &setting;
+        }
+    }
+    return nullptr;
+}
+
+const Setting* find_setting_by_field(const std::string& field) {
+    for (const Setting& setting : run_settings()) {
+        if (setting.field == field) {
+            return &setting;
+        }
+    }
+    return nullptr;
+}
+
+std::string format_setting_value(const SettingValue& value) {
+    const auto number = [](double x) {
+        if (!std::isfinite(x)) {
+            return std::string(std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf"));
+        }
+        char buffer[32];
+        const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+        std::string text(buffer, result.ptr);
+        // TOML needs a decimal point or an exponent to read a float back as a float.
+        if (text.find_first_of(".eE") == std::string::npos) {
+            text += ".0";
+        }
+        return text;
+    };
+    struct Formatter {
+        decltype(number)& format;
+        std::string operator()(double x) const { return format(x); }
+        std::string operator()(std::int64_t x) const { return std::to_string(x); }
+        std::string operator()(bool x) const { return x ? "true" : "false"; }
+        std::string operator()(const std::string& x) const {
+            std::string quoted = "\"";
+            for (char ch : x) {
+                if (ch == '"' || ch == '\\') {
+                    quoted += '\\';
+                }
+                quoted += ch;
+            }
+            return quoted + "\"";
+        }
+        std::string operator()(const Vector2& x) const {
+            return "[" + format(x.x()) + ", " + format(x.y()) + "]";
+        }
+    };
+    return std::visit(Formatter{number}, value);
+}
+
+}  // namespace legofeup::lessons

@@ -1,0 +1,151 @@
+#include "legofeup/lessons/run_config.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "legofeup/lessons/config_schema.hpp"
+#include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/world_file.hpp"
+
+namespace legofeup::lessons {
+namespace {
+
+constexpr double kSecondsPerLap = 200.0;  // a lap takes ~90 s; a lost robot gets twice that
+
+std::string number_text(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+// A validation issue, pointed at the setting the user wrote and where they wrote it.
+InputProblem locate(const RunConfig& config, const ConfigIssue& issue) {
+    InputProblem problem{"", 0, issue.field, issue.value, issue.reason};
+    if (const Setting* setting = find_setting_by_field(issue.field)) {
+        problem.key = setting->key;
+    }
+    if (const auto origin = config.origins.find(issue.field); origin != config.origins.end()) {
+        problem.source = origin->second.source;
+        problem.line = origin->second.line;
+        problem.key = origin->second.key;
+    }
+    return problem;
+}
+
+void check_range(std::vector<ConfigIssue>& issues, const char* field, double value, double low,
+                 double high, bool zero_allowed = false) {
+    const bool ok =
+        std::isfinite(value) && ((zero_allowed && value == 0.0) || (value >= low && value <= high));
+    if (!ok) {
+        issues.push_back({field, number_text(value),
+                          "must be between " + number_text(low) + " and " + number_text(high)
+                              + (zero_allowed ? " (or 0)" : "")});
+    }
+}
+
+Controller make_controller(const RunConfig& config, const sim::WorldSpec& world) {
+    const RoutineSpec& routine = config.routine;
+    switch (routine.kind) {
+        case RoutineSpec::Kind::Square:
+            return FollowPath(sim::world_square_path(world), config.laps);
+        case RoutineSpec::Kind::Line:
+            return FollowLine(routine.line_from, routine.line_to);
+        case RoutineSpec::Kind::Circle:
+            return FollowCircle(routine.circle_centre, routine.circle_radius,
+                                !routine.circle_clockwise);
+        case RoutineSpec::Kind::Goto:
+            return GoXYTheta(routine.goto_target);
+        case RoutineSpec::Kind::Manual:
+            return ManualDrive{};
+    }
+    return ManualDrive{};
+}
+
+}  // namespace
+
+ResolvedRun resolve(const RunConfig& config) {
+    ResolvedRun run;
+    run.config = config;
+
+    // The world: built in, or a file (whose own problems carry their lines).
+    if (config.world_file.empty()) {
+        run.world = sim::standard_arena();
+    } else {
+        try {
+            run.world = load_world_file(config.world_file);
+        } catch (const InputError& error) {
+            std::vector<InputProblem> problems = error.problems();
+            if (const auto origin = config.origins.find("world"); origin != config.origins.end()) {
+                problems.push_back({origin->second.source, origin->second.line, "world",
+                                    "\"" + config.world_file + "\"", "the world file is unusable"});
+            }
+            throw InputError(std::move(problems));
+        }
+    }
+
+    std::vector<ConfigIssue> issues;
+    check_range(issues, "duration", config.duration, 1.0, 1e6, true);
+    check_range(issues, "robot.wheel_diameter", config.robot.wheel_diameter, 0.005, 1.0);
+    check_range(issues, "robot.counts_per_turn", config.robot.counts_per_turn, 1.0, 1e6);
+    check_range(issues, "odometry.codo_right", config.robot.codo_right, 1.0, 1e6, true);
+    check_range(issues, "odometry.codo_left", config.robot.codo_left, 1.0, 1e6, true);
+
+    // The filter's side: the robot as it is believed to be built, and the world's walls.
+    const double nominal_codo =
+        nominal_counts_per_metre(config.robot.wheel_diameter, config.robot.counts_per_turn);
+    LoopConfig& loop = run.loop;
+    loop.odometry.codo_right =
+        config.robot.codo_right > 0.0 ? config.robot.codo_right : nominal_codo;
+    loop.odometry.codo_left = config.robot.codo_left > 0.0 ? config.robot.codo_left : nominal_codo;
+    loop.odometry.wheel_base = config.robot.wheel_base;
+    loop.ir_mount = config.robot.ir_mount;
+    loop.ir_curve = config.ir_curve;
+    loop.walls = WallMap(run.world.walls);
+    loop.association = config.association;
+    loop.filter = config.filter;
+    loop.initial = config.initial;
+    loop.initial.pose = config.initial_pose.applied_to(run.world.start);
+    loop.motion = config.motion;
+    loop.gains = config.gains;
+    loop.controller = make_controller(config, run.world);
+    loop.max_wheel_speed = config.max_wheel_speed;
+    const auto loop_issues = validate(loop);
+    issues.insert(issues.end(), loop_issues.begin(), loop_issues.end());
+
+    // The simulated robot: the same nominal robot with the [simulator] section's errors.
+    run.robot = config.physical;
+    run.robot.wheel_diameter = config.robot.wheel_diameter;
+    run.robot.wheel_base = config.robot.wheel_base;
+    run.robot.counts_per_turn = config.robot.counts_per_turn;
+    run.robot.ir_mount = config.robot.ir_mount;
+    run.robot.ir_curve = config.ir_curve;
+    for (auto&& more : {sim::validate(run.robot), sim::validate(config.simulator)}) {
+        for (const ConfigIssue& issue : more) {
+            // Geometry shared with the filter is reported once, under the filter's name.
+            const bool shared = issue.field.rfind("simulator.ir_mount.", 0) == 0
+                                || issue.field.rfind("simulator.ir_curve.", 0) == 0
+                                || issue.field == "simulator.wheel_diameter"
+                                || issue.field == "simulator.wheel_base"
+                                || issue.field == "simulator.counts_per_turn";
+            if (!shared) {
+                issues.push_back(issue);
+            }
+        }
+    }
+    run.true_start = config.true_start.applied_to(run.world.start);
+
+    if (!issues.empty()) {
+        std::vector<InputProblem> problems;
+        for (const ConfigIssue& issue : issues) {
+            problems.push_back(locate(config, issue));
+        }
+        throw InputError(std::move(problems));
+    }
+
+    run.max_duration = config.routine.kind == RoutineSpec::Kind::Square || config.duration <= 0.0
+                           ? kSecondsPerLap * config.laps
+                           : config.duration;
+    return run;
+}
+
+}  // namespace legofeup::lessons

@@ -1,0 +1,87 @@
+#include "legofeup/lessons/run_summary.hpp"
+
+#include "legofeup/lessons/config_schema.hpp"
+
+namespace legofeup::lessons {
+namespace {
+
+nlohmann::json value_to_json(const SettingValue& value) {
+    struct ToJson {
+        nlohmann::json operator()(double x) const { return x; }
+        nlohmann::json operator()(std::int64_t x) const { return x; }
+        nlohmann::json operator()(bool x) const { return x; }
+        nlohmann::json operator()(const std::string& x) const { return x; }
+        nlohmann::json operator()(const Vector2& x) const { return {x.x(), x.y()}; }
+    };
+    return std::visit(ToJson{}, value);
+}
+
+}  // namespace
+
+nlohmann::json config_to_json(const RunConfig& config) {
+    nlohmann::json json = nlohmann::json::object();
+    for (const Setting& setting : run_settings()) {
+        if (setting.is_set && !setting.is_set(config)) {
+            continue;
+        }
+        nlohmann::json& section = setting.section().empty() ? json : json[setting.section()];
+        section[setting.name()] = value_to_json(setting.get(config));
+    }
+    return json;
+}
+
+nlohmann::json metrics_to_json(const RunMetrics& m) {
+    nlohmann::json association = nlohmann::json::object();
+    for (int i = 0; i < kAssociationOutcomeCount; ++i) {
+        association[to_string(static_cast<AssociationOutcome>(i))] =
+            m.association_outcomes[static_cast<std::size_t>(i)];
+    }
+    return {
+        {"steps", m.steps},
+        {"simulated_time_s", m.duration},
+        {"rms_position_error_m", m.rms_position_error},
+        {"max_position_error_m", m.max_position_error},
+        {"final_position_error_m", m.final_position_error},
+        {"rms_heading_error_rad", m.rms_heading_error},
+        {"max_heading_error_rad", m.max_heading_error},
+        {"final_heading_error_rad", m.final_heading_error},
+        {"rms_odometry_position_error_m", m.rms_odometry_position_error},
+        {"final_odometry_position_error_m", m.final_odometry_position_error},
+        {"observations", m.observations},
+        {"association", association},
+        {"updates_applied", m.updates_applied},
+        {"updates_rejected", m.updates_rejected},
+        {"mean_update_position_step_m", m.mean_update_position_step},
+        {"mean_update_heading_step_rad", m.mean_update_heading_step},
+        {"rms_estimate_to_odometry_m", m.rms_estimate_to_odometry},
+        {"mean_nees", m.mean_nees},
+        {"nees_95_bounds", {m.nees_bounds.lower, m.nees_bounds.upper}},
+        {"nees_inside_fraction", m.nees_inside_fraction},
+        {"mean_nis", m.mean_nis},
+    };
+}
+
+nlohmann::json run_summary(const ResolvedRun& run, const RunResult& result,
+                           std::string_view experiment, std::string_view title) {
+    nlohmann::json walls = nlohmann::json::array();
+    for (const Wall& wall : run.world.walls) {
+        walls.push_back({{"name", wall.name},
+                         {"from", {wall.start.x(), wall.start.y()}},
+                         {"to", {wall.end.x(), wall.end.y()}}});
+    }
+    nlohmann::json metrics = metrics_to_json(result.metrics);
+    metrics["wall_time_s"] = result.wall_seconds;
+    metrics["real_time_factor"] =
+        result.wall_seconds > 0.0 ? result.metrics.duration / result.wall_seconds : 0.0;
+    metrics["routine_finished"] = result.routine_finished;
+    return {
+        {"experiment", experiment},
+        {"title", title},
+        {"seed", run.config.seed},
+        {"config", config_to_json(run.config)},
+        {"world", {{"name", run.world.name}, {"walls", walls}}},
+        {"metrics", metrics},
+    };
+}
+
+}  // namespace legofeup::lessons

@@ -1,0 +1,183 @@
+#include "legofeup/lessons/world_file.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "config_reader.hpp"
+#include "legofeup/core/angles.hpp"
+#include "legofeup/lessons/input_error.hpp"
+#include "toml_values.hpp"
+
+namespace legofeup::lessons {
+namespace {
+
+class WorldReader {
+  public:
+    explicit WorldReader(std::string source) : source_(std::move(source)) {}
+
+    sim::WorldSpec read(const toml::table& root) {
+        sim::WorldSpec world;
+        world.walls.clear();
+        for (const auto& [key, node] : root) {
+            const std::string name(key.str());
+            if (name == "name") {
+                if (const auto* text = node.as_string()) {
+                    world.name = text->get();
+                } else {
+                    problem(node, "name", "must be a quoted text");
+                }
+            } else if (name == "start") {
+                read_start(node, world.start);
+            } else if (name == "path") {
+                read_path(node, world);
+            } else if (name == "wall") {
+                read_walls(node, world.walls);
+            } else {
+                problem(node, name, "unknown key (expected name, [start], [path] or [[wall]])");
+            }
+        }
+        return world;
+    }
+
+    const std::vector<InputProblem>& problems() const { return problems_; }
+
+  private:
+    void problem(const toml::node& node, std::string key, std::string reason) {
+        const bool scalar = !node.is_table() && !node.is_array();
+        problems_.push_back({source_, line_of(node), std::move(key),
+                             scalar ? node_text(node) : std::string(), std::move(reason)});
+    }
+
+    std::optional<double> finite_number(const toml::node& node, const std::string& key) {
+        const auto value = number_of(node);
+        if (!value || !std::isfinite(*value)) {
+            problem(node, key, "must be a finite number");
+            return std::nullopt;
+        }
+        return value;
+    }
+
+    std::optional<Vector2> finite_point(const toml::node& node, const std::string& key) {
+        const auto value = point_of(node);
+        if (!value || !value->allFinite()) {
+            problem(node, key, "must be a point [x, y] of finite numbers");
+            return std::nullopt;
+        }
+        return value;
+    }
+
+    void read_start(const toml::node& node, Pose2& start) {
+        const auto* table = node.as_table();
+        if (table == nullptr) {
+            problem(node, "start", "must be a table with x, y and heading_deg");
+            return;
+        }
+        for (const auto& [key, value] : *table) {
+            const std::string name = "start." + std::string(key.str());
+            if (key == "x") {
+                start.x = finite_number(value, name).value_or(start.x);
+            } else if (key == "y") {
+                start.y = finite_number(value, name).value_or(start.y);
+            } else if (key == "heading_deg") {
+                start.theta = degrees_to_radians(finite_number(value, name).value_or(0.0));
+            } else {
+                problem(value, name, "unknown key (expected x, y or heading_deg)");
+            }
+        }
+    }
+
+    void read_path(const toml::node& node, sim::WorldSpec& world) {
+        const auto* table = node.as_table();
+        if (table == nullptr) {
+            problem(node, "path", "must be a table with side and centre");
+            return;
+        }
+        for (const auto& [key, value] : *table) {
+            const std::string name = "path." + std::string(key.str());
+            if (key == "side") {
+                const auto side = finite_number(value, name);
+                if (side && !(*side > 0.0 && *side <= 1000.0)) {
+                    problem(value, name, "must be greater than 0 and at most 1000 m");
+                } else if (side) {
+                    world.path_side = *side;
+                }
+            } else if (key == "centre") {
+                world.path_centre = finite_point(value, name).value_or(world.path_centre);
+            } else {
+                problem(value, name, "unknown key (expected side or centre)");
+            }
+        }
+    }
+
+    void read_walls(const toml::node& node, std::vector<Wall>& walls) {
+        const auto* array = node.as_array();
+        if (array == nullptr || !array->is_array_of_tables()) {
+            problem(node, "wall", "walls are written as [[wall]] tables");
+            return;
+        }
+        for (const auto& entry : *array) {
+            const std::string prefix = "wall[" + std::to_string(walls.size()) + "]";
+            Wall wall;
+            wall.name = prefix;
+            bool has_from = false;
+            bool has_to = false;
+            for (const auto& [key, value] : *entry.as_table()) {
+                const std::string name = prefix + "." + std::string(key.str());
+                if (key == "name") {
+                    if (const auto* text = value.as_string()) {
+                        wall.name = text->get();
+                    } else {
+                        problem(value, name, "must be a quoted text");
+                    }
+                } else if (key == "from") {
+                    has_from = true;
+                    wall.start = finite_point(value, name).value_or(wall.start);
+                } else if (key == "to") {
+                    has_to = true;
+                    wall.end = finite_point(value, name).value_or(wall.end);
+                } else {
+                    problem(value, name, "unknown key (expected name, from or to)");
+                }
+            }
+            if (!has_from || !has_to) {
+                problem(entry, prefix, "a wall needs both `from` and `to`");
+            } else if ((wall.end - wall.start).norm() < 1e-6) {
+                const std::string named =
+                    wall.name == prefix ? prefix : prefix + " (" + wall.name + ")";
+                problem(entry, named, "`from` and `to` are the same point: a wall needs a length");
+            }
+            walls.push_back(wall);
+        }
+    }
+
+    std::string source_;
+    std::vector<InputProblem> problems_;
+};
+
+}  // namespace
+
+sim::WorldSpec parse_world(std::string_view text, const std::string& source) {
+    const toml::table root = parse_toml(text, source);
+    WorldReader reader(source);
+    sim::WorldSpec world = reader.read(root);
+    if (!reader.problems().empty()) {
+        throw InputError(reader.problems());
+    }
+    if (world.name.empty()) {
+        world.name = source;
+    }
+    return world;
+}
+
+sim::WorldSpec load_world_file(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        throw InputError({{path.string(), 0, "", "", "cannot open the world file"}});
+    }
+    std::stringstream text;
+    text << file.rdbuf();
+    return parse_world(text.str(), path.string());
+}
+
+}  // namespace legofeup::lessons

@@ -1,0 +1,24 @@
+#pragma once
+// What really happened, reported on its own channel for displays and metrics. The filter
+// never sees it: links carry SensorFrames only.
+
+#include <array>
+
+#include "legofeup/core/motion.hpp"
+#include "legofeup/core/state.hpp"
+
+namespace legofeup::sim {
+
+struct GroundTruth {
+    double time = 0.0;         ///< simulated time, s
+    Pose2 pose;                ///< the axle midpoint and heading
+    VelocityCommand velocity;  ///< actual forward speed (m/s) and turn rate (rad/s)
+    WheelSpeeds
+        wheel_surface_speeds;  ///< ω·r of each wheel, m/s (differs from ground speed when slipping)
+    bool touching_wall = false;  ///< the chassis is in contact with a wall
+    /// Distances the IR beams really measured at their last sample (before noise and A/D),
+    /// m; the ray length when they saw nothing.
+    std::array<double, 2> ir_distances{};
+};
+
+}  // namespace legofeup::sim

@@ -1,0 +1,35 @@
+#pragma once
+// Independent, seeded random streams, one per noise source. Each stream's seed is derived
+// from the run's seed and the stream's number (SplitMix64), so switching one noise source on
+// or off never changes the realisation of another, and the same seed always gives the same
+// numbers from the same binary.
+
+#include <cstdint>
+#include <random>
+
+namespace legofeup::sim {
+
+enum class NoiseStream : std::uint64_t { IrFront = 1, IrRear = 2, SlipRight = 3, SlipLeft = 4 };
+
+/// SplitMix64 finaliser: a well-mixed 64-bit value from any 64-bit input.
+inline std::uint64_t splitmix64(std::uint64_t value) {
+    value += 0x9E3779B97F4A7C15ULL;
+    value = (value ^ (value >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    value = (value ^ (value >> 27)) * 0x94D049BB133111EBULL;
+    return value ^ (value >> 31);
+}
+
+class GaussianStream {
+  public:
+    GaussianStream(std::uint64_t run_seed, NoiseStream stream)
+        : engine_(splitmix64(run_seed ^ splitmix64(static_cast<std::uint64_t>(stream)))) {}
+
+    /// A standard normal sample.
+    double next() { return unit_(engine_); }
+
+  private:
+    std::mt19937_64 engine_;
+    std::normal_distribution<double> unit_{0.0, 1.0};
+};
+
+}  // namespace legofeup::sim

@@ -1,0 +1,275 @@
+#include "legofeup/sim/simulator.hpp"
+
+#include <box2d/box2d.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <utility>
+
+#include "box2d_convert.hpp"
+#include "drive_train.hpp"
+#include "ir_ray.hpp"
+#include "noise_streams.hpp"
+
+namespace legofeup::sim {
+namespace {
+
+constexpr int kVelocityIterations = 6;
+constexpr int kPositionIterations = 2;
+
+std::string describe(const std::vector<ConfigIssue>& issues) {
+    std::string text = "invalid simulator configuration:";
+    for (const ConfigIssue& issue : issues) {
+        text += "\n  " + issue.message();
+    }
+    return text;
+}
+
+}  // namespace
+
+std::vector<ConfigIssue> validate(const SimulatorSettings& settings) {
+    std::vector<ConfigIssue> issues;
+    const auto text = [](double value) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.6g", value);
+        return std::string(buffer);
+    };
+    if (!(settings.physics_rate >= 100.0 && settings.physics_rate <= 10000.0)) {
+        issues.push_back({"simulator.physics_rate", text(settings.physics_rate),
+                          "must be between 100 and 10000 Hz"});
+    } else {
+        const double steps = settings.control_period * settings.physics_rate;
+        if (!(settings.control_period > 0.0 && settings.control_period <= 1.0)
+            || std::abs(steps - std::round(steps)) > 1e-9 || std::round(steps) < 1.0) {
+            issues.push_back({"simulator.control_period", text(settings.control_period),
+                              "must be a whole number of physics steps, at most 1 s"});
+        }
+    }
+    return issues;
+}
+
+struct Simulator::State {
+    WorldSpec world;
+    RobotSpec robot;
+    SimulatorSettings settings;
+    double dt = 0.01;
+    int steps_per_period = 5;
+
+    b2World physics{b2Vec2(0.0f, 0.0f)};
+    b2Body* chassis = nullptr;
+    DriveTrain drive_train;
+
+    std::uint64_t step_count = 0;
+    std::uint32_t sequence = 0;
+    double next_ir_time = 0.0;
+    std::array<std::uint16_t, 2> ir_adc{};
+    std::array<double, 2> ir_distances{};
+
+    GaussianStream ir_front_noise{0, NoiseStream::IrFront};
+    GaussianStream ir_rear_noise{0, NoiseStream::IrRear};
+    GaussianStream slip_right{0, NoiseStream::SlipRight};
+    GaussianStream slip_left{0, NoiseStream::SlipLeft};
+
+    State(WorldSpec w, RobotSpec r, SimulatorSettings s)
+        : world(std::move(w)), robot(std::move(r)), settings(s), drive_train(robot) {
+        dt = 1.0 / settings.physics_rate;
+        steps_per_period =
+            static_cast<int>(std::lround(settings.control_period * settings.physics_rate));
+        physics.SetContinuousPhysics(false);  // 1 mm per step against 1 cm skins: no tunnelling
+        physics.SetAllowSleeping(false);
+        build_walls();
+    }
+
+    double time() const { return static_cast<double>(step_count) * dt; }
+
+    void build_walls() {
+        b2BodyDef definition;  // static
+        b2Body* walls = physics.CreateBody(&definition);
+        for (const Wall& wall : world.walls) {
+            b2EdgeShape edge;  // zero thickness: the beams reflect exactly on the wall's line
+            edge.SetTwoSided(to_b2(wall.start), to_b2(wall.end));
+            b2FixtureDef fixture;
+            fixture.shape = &edge;
+            fixture.friction = 0.3f;
+            walls->CreateFixture(&fixture);
+        }
+    }
+
+    void build_chassis(const Pose2& start) {
+        if (chassis != nullptr) {
+            physics.DestroyBody(chassis);
+        }
+        b2BodyDef definition;
+        definition.type = b2_dynamicBody;
+        definition.position = to_b2(start.x, start.y);
+        definition.angle = static_cast<float>(start.theta);
+        definition.allowSleep = false;
+        chassis = physics.CreateBody(&definition);
+
+        // Box2D rounds polygons with a skin of b2_polygonRadius; shrink the polygon by it so
+        // the robot collides at the outline the spec gives.
+        b2PolygonShape box;
+        const auto skin = static_cast<double>(b2_polygonRadius);
+        const auto front = static_cast<float>(robot.chassis_front - skin);
+        const auto rear = static_cast<float>(robot.chassis_rear - skin);
+        const auto half_width = static_cast<float>(robot.chassis_half_width - skin);
+        const b2Vec2 corners[] = {
+            {-rear, -half_width}, {front, -half_width}, {front, half_width}, {-rear, half_width}};
+        box.Set(corners, 4);
+        b2FixtureDef fixture;
+        fixture.shape = &box;
+        fixture.density = 1.0f;
+        fixture.friction = 0.3f;
+        chassis->CreateFixture(&fixture);
+
+        // The NXT brick sits over the axle: put the centre of mass at the body origin (the
+        // axle midpoint, which is also the pose the filter estimates).
+        b2MassData mass;
+        chassis->GetFixtureList()->GetMassData(&mass);
+        const double scale = robot.mass / static_cast<double>(mass.mass);
+        b2MassData placed;
+        placed.mass = static_cast<float>(robot.mass);
+        placed.center.SetZero();
+        placed.I = static_cast<float>(static_cast<double>(mass.I) * scale);  // about the origin
+        chassis->SetMassData(&placed);
+    }
+
+    void reseed(std::uint64_t seed) {
+        ir_front_noise = GaussianStream(seed, NoiseStream::IrFront);
+        ir_rear_noise = GaussianStream(seed, NoiseStream::IrRear);
+        slip_right = GaussianStream(seed, NoiseStream::SlipRight);
+        slip_left = GaussianStream(seed, NoiseStream::SlipLeft);
+    }
+
+    // The IR sensors sample every ir_period and hold the value: closest hit, noise in
+    // metres, the characteristic curve (with its fold-back), 10-bit conversion.
+    void sample_ir() {
+        GaussianStream* noise[] = {&ir_front_noise, &ir_rear_noise};
+        const b2Vec2 look = chassis->GetWorldVector(b2Vec2(0.0f, -1.0f));  // the right side
+        for (int sensor = 0; sensor < kIrSensorCount; ++sensor) {
+            const auto s = static_cast<std::size_t>(sensor);
+            const b2Vec2 mount =
+                to_b2(robot.ir_mount.longitudinal(sensor), -robot.ir_mount.lateral_offset);
+            const b2Vec2 origin = chassis->GetWorldPoint(mount);
+            ir_distances[s] = cast_ir_ray(physics, chassis, origin, look, robot.ir_ray_length);
+            const double measured =
+                ir_distances[s] + (robot.ir_noise > 0.0 ? robot.ir_noise * noise[s]->next() : 0.0);
+            ir_adc[s] =
+                quantize_adc(adc_from_distance(measured, robot.ir_curve), robot.ir_curve.adc_max);
+        }
+    }
+
+    void step() {
+        if (time() + 1e-12 >= next_ir_time) {
+            sample_ir();
+            next_ir_time += robot.ir_period;
+        }
+        drive_train.drive(*chassis, dt, slip_right, slip_left);
+        physics.Step(static_cast<float>(dt), kVelocityIterations, kPositionIterations);
+        ++step_count;
+    }
+
+    void restart(const Pose2& start, std::uint64_t seed) {
+        build_chassis(start);
+        drive_train = DriveTrain(robot);
+        reseed(seed);
+        step_count = 0;
+        sequence = 0;
+        next_ir_time = 0.0;
+        sample_ir();
+        next_ir_time = robot.ir_period;
+    }
+};
+
+Simulator::Simulator(WorldSpec world, RobotSpec robot, SimulatorSettings settings,
+                     std::uint64_t seed) {
+    auto issues = validate(robot);
+    const auto more = validate(settings);
+    issues.insert(issues.end(), more.begin(), more.end());
+    if (!issues.empty()) {
+        throw std::invalid_argument(describe(issues));
+    }
+    const Pose2 start = world.start;
+    state_ = std::make_unique<State>(std::move(world), std::move(robot), settings);
+    state_->restart(start, seed);
+}
+
+Simulator::~Simulator() = default;
+
+void Simulator::reset(const Pose2& start, std::uint64_t seed) {
+    state_->restart(start, seed);
+}
+
+void Simulator::teleport(const Pose2& pose) {
+    b2Body& chassis = *state_->chassis;
+    chassis.SetTransform(to_b2(pose.x, pose.y), static_cast<float>(pose.theta));
+    chassis.SetLinearVelocity(b2Vec2(0.0f, 0.0f));
+    chassis.SetAngularVelocity(0.0f);
+}
+
+void Simulator::set_wheel_command(const WheelSpeeds& command) {
+    state_->drive_train.set_command(command);
+}
+
+void Simulator::set_robot(const RobotSpec& robot) {
+    if (const auto issues = validate(robot); !issues.empty()) {
+        throw std::invalid_argument(describe(issues));
+    }
+    state_->robot = robot;
+    state_->drive_train.set_spec(robot);
+}
+
+void Simulator::step_physics() {
+    state_->step();
+}
+
+void Simulator::step_control_period() {
+    for (int i = 0; i < state_->steps_per_period; ++i) {
+        state_->step();
+    }
+    ++state_->sequence;
+}
+
+SensorFrame Simulator::sensor_frame() const {
+    SensorFrame frame;
+    frame.time = state_->time();
+    frame.sequence = state_->sequence;
+    const auto& degrees = state_->drive_train.wheel_degrees();
+    frame.encoder_counts = {static_cast<std::int32_t>(std::floor(degrees[0])),
+                            static_cast<std::int32_t>(std::floor(degrees[1]))};
+    frame.ir_adc = state_->ir_adc;
+    return frame;
+}
+
+GroundTruth Simulator::ground_truth() const {
+    const b2Body& chassis = *state_->chassis;
+    GroundTruth truth;
+    truth.time = state_->time();
+    const Vector2 position = from_b2(chassis.GetPosition());
+    truth.pose = {position.x(), position.y(), wrap_angle(static_cast<double>(chassis.GetAngle()))};
+    const Vector2 forward = from_b2(chassis.GetWorldVector(b2Vec2(1.0f, 0.0f)));
+    truth.velocity = {from_b2(chassis.GetLinearVelocity()).dot(forward),
+                      static_cast<double>(chassis.GetAngularVelocity())};
+    truth.wheel_surface_speeds = state_->drive_train.surface_speeds();
+    for (const b2ContactEdge* edge = chassis.GetContactList(); edge != nullptr; edge = edge->next) {
+        truth.touching_wall = truth.touching_wall || edge->contact->IsTouching();
+    }
+    truth.ir_distances = state_->ir_distances;
+    return truth;
+}
+
+double Simulator::time() const {
+    return state_->time();
+}
+const WorldSpec& Simulator::world() const {
+    return state_->world;
+}
+const RobotSpec& Simulator::robot() const {
+    return state_->robot;
+}
+const SimulatorSettings& Simulator::settings() const {
+    return state_->settings;
+}
+
+}  // namespace legofeup::sim
