@@ -44,7 +44,7 @@ RunConfig build_config(const RunOptions& options, std::string& title) {
     if (!options.experiment.empty()) {
         const lessons::Experiment* experiment = lessons::find_experiment(options.experiment);
         if (experiment == nullptr) {
-            throw InputError({{"--experiment", 0, "", options.experiment,
+            throw InputError({{"", 0, "--experiment", options.experiment,
                                "unknown experiment (choose a, b, c, d, e or f)"}});
         }
         config = experiment->config;
