@@ -69,7 +69,7 @@ ResolvedRun resolve(const RunConfig& config) {
 
     // The world: built in, or a file (whose own problems carry their lines).
     if (config.world_file.empty()) {
-        run.world = sim::standard_arena();
+        run.world = built_in_world();
     } else {
         try {
             run.world = load_world_file(config.world_file);

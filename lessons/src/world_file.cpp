@@ -7,6 +7,7 @@
 #include "config_reader.hpp"
 #include "legofeup/core/angles.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "standard_arena_resource.hpp"
 #include "toml_values.hpp"
 
 namespace legofeup::lessons {
@@ -178,6 +179,12 @@ sim::WorldSpec load_world_file(const std::filesystem::path& path) {
     std::stringstream text;
     text << file.rdbuf();
     return parse_world(text.str(), path.string());
+}
+
+const sim::WorldSpec& built_in_world() {
+    static const sim::WorldSpec world =
+        parse_world(resources::kStandardArenaWorld, "worlds/standard_arena.toml (built in)");
+    return world;
 }
 
 }  // namespace legofeup::lessons

@@ -6,10 +6,14 @@
 namespace legofeup::lessons {
 namespace {
 
-TEST(WorldFile, TheShippedStandardArenaIsTheBuiltInOne) {
+TEST(WorldFile, TheShippedStandardArenaIsThePapersArena) {
+    // The file (which runs use, built in) and the arena core and sim build from the
+    // scenario's numbers must be the same world.
     const sim::WorldSpec file =
         load_world_file(std::string(LEGOFEUP_SOURCE_DIR) + "/resources/worlds/standard_arena.toml");
     const sim::WorldSpec built_in = sim::standard_arena();
+    EXPECT_EQ(built_in_world().walls.size(), file.walls.size());
+    EXPECT_EQ(built_in_world().name, file.name);
     EXPECT_EQ(file.name, built_in.name);
     EXPECT_EQ(file.start, built_in.start);
     EXPECT_EQ(file.path_side, built_in.path_side);

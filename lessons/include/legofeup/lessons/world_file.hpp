@@ -15,4 +15,8 @@ sim::WorldSpec parse_world(std::string_view text, const std::string& source);
 
 sim::WorldSpec load_world_file(const std::filesystem::path& path);
 
+/// The standard arena, read from resources/worlds/standard_arena.toml as built into the
+/// programs: the world every run uses unless its configuration names another.
+const sim::WorldSpec& built_in_world();
+
 }  // namespace legofeup::lessons

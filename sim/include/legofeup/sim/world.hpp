@@ -23,8 +23,9 @@ struct WorldSpec {
     Vector2 path_centre = Vector2::Zero();
 };
 
-/// The standard LegoFeup arena of the paper (resources/worlds/standard_arena.toml describes
-/// the same world as a file).
+/// The standard LegoFeup arena of the paper, built from the scenario's numbers. Runs read it
+/// from resources/worlds/standard_arena.toml (lessons::built_in_world); a test keeps the two
+/// the same.
 WorldSpec standard_arena();
 
 /// The square path of a world as FollowPath segments (corners CCW from the lower left).
