@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <vector>
 
 #include "legofeup/core/angles.hpp"
 #include "legofeup/lessons/config_file.hpp"
@@ -26,15 +27,15 @@ using lessons::RunConfig;
 // Passes every step to several observers.
 class Observers final : public lessons::RunObserver {
   public:
-    Observers(lessons::RunObserver& a, lessons::RunObserver& b) : a_(a), b_(b) {}
+    void add(lessons::RunObserver& observer) { observers_.push_back(&observer); }
     void on_step(const LoopSnapshot& snapshot, const sim::GroundTruth& truth) override {
-        a_.on_step(snapshot, truth);
-        b_.on_step(snapshot, truth);
+        for (lessons::RunObserver* observer : observers_) {
+            observer->on_step(snapshot, truth);
+        }
     }
 
   private:
-    lessons::RunObserver& a_;
-    lessons::RunObserver& b_;
+    std::vector<lessons::RunObserver*> observers_;
 };
 
 // Defaults, then the experiment's preset, then the configuration file, then the flags.
@@ -144,13 +145,17 @@ int run_command(const RunOptions& options) {
         }
         lessons::TraceCsvWriter writer(trace.stream(), run.loop);
         RunRecording recording;
-        Observers observers(writer, recording);
+        Observers observers;
+        observers.add(writer);
+        if (options.plots) {
+            observers.add(recording);
+        }
         ProgressBar progress("run " + (options.experiment.empty() ? "" : options.experiment));
         const lessons::RunResult result =
-            lessons::run_lockstep(run, &observers, [&](double simulated, double limit) {
+            lessons::run_lockstep(run, &observers, [&](double fraction, double simulated) {
                 char detail[64];
                 std::snprintf(detail, sizeof detail, "%.0f s simulated", simulated);
-                progress.update(simulated / limit, detail);
+                progress.update(fraction, detail);
             });
         progress.finish();
         trace.commit();

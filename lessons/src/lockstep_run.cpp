@@ -7,6 +7,18 @@
 #include "legofeup/sim/simulator.hpp"
 
 namespace legofeup::lessons {
+namespace {
+
+double progress_of(const ResolvedRun& run, const LoopSnapshot& snapshot) {
+    const auto* path = std::get_if<FollowPath>(&run.loop.controller);
+    if (path != nullptr && path->laps() > 0 && snapshot.controller.segment >= 0) {
+        const double sides = static_cast<double>(path->segments().size());
+        return (snapshot.controller.lap + snapshot.controller.segment / sides) / path->laps();
+    }
+    return snapshot.time / run.max_duration;
+}
+
+}  // namespace
 
 RunResult run_lockstep(const ResolvedRun& run, RunObserver* observer,
                        const ProgressCallback& progress) {
@@ -32,7 +44,7 @@ RunResult run_lockstep(const ResolvedRun& run, RunObserver* observer,
         }
         link.send_command(snapshot.wheels);
         if (progress && step % 200 == 0) {
-            progress(frame.time, run.max_duration);
+            progress(progress_of(run, snapshot), frame.time);
         }
     }
     result.metrics = metrics.result();

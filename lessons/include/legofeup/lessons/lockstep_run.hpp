@@ -23,8 +23,9 @@ struct RunResult {
     double wall_seconds = 0.0;      ///< how long the run took on this machine
 };
 
-/// Called now and then with the simulated time and the run's time limit.
-using ProgressCallback = std::function<void(double simulated, double limit)>;
+/// Called now and then with how far the run has got (0 … 1: laps and sides driven for a
+/// path, otherwise simulated time over the time limit) and the simulated time in seconds.
+using ProgressCallback = std::function<void(double fraction, double simulated)>;
 
 /// Runs until the routine is finished (e.g. all laps driven) or the time limit.
 RunResult run_lockstep(const ResolvedRun& run, RunObserver* observer = nullptr,
