@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "plot/figure.hpp"
 
@@ -126,35 +127,30 @@ void covariance(const RunRecording& rec, const std::string& base, const std::str
     figure.write(base);
 }
 
-void ir_distances(const RunRecording& rec, const std::string& base, const std::string& title) {
-    Figure figure(title + " — IR distances", 1, kWidth, 520);
-    plot::Panel& p = figure.panel(0);
-    p.title = "IR distances ds1 (front) and ds2 (rear), in range only";
-    p.x_label = "t (s)";
-    p.y_label = "distance (m)";
-    p.y_min = 0.0;
-    p.y_max = 0.32;
-    const auto& s = rec.steps();
-    const auto t = column(s, [](auto& k) { return k.time; });
-    p.lines.push_back({t, column(s, [](auto& k) { return k.ir_distance[0]; }), colors::kFront, 1.2,
-                       false, "ds1 (front)"});
-    p.lines.push_back({t, column(s, [](auto& k) { return k.ir_distance[1]; }), colors::kRear, 1.2,
-                       false, "ds2 (rear)"});
-    figure.write(base);
-}
+// One panel of two time series (the IR distances, the wheel speeds).
+struct TimeSeries {
+    double (*pick)(const RunRecording::Step&);
+    plot::Color color;
+    const char* label;
+};
 
-void wheel_speeds(const RunRecording& rec, const std::string& base, const std::string& title) {
-    Figure figure(title + " — wheel speeds", 1, kWidth, 520);
+void two_series(const RunRecording& rec, const std::string& base, const std::string& title,
+                const std::string& panel_title, const std::string& y_label, const TimeSeries& first,
+                const TimeSeries& second, std::optional<double> y_max = std::nullopt) {
+    Figure figure(title, 1, kWidth, 520);
     plot::Panel& p = figure.panel(0);
-    p.title = "Commanded wheel speeds V1 (right) and V2 (left)";
+    p.title = panel_title;
     p.x_label = "t (s)";
-    p.y_label = "speed (m/s)";
+    p.y_label = y_label;
+    if (y_max) {
+        p.y_min = 0.0;
+        p.y_max = y_max;
+    }
     const auto& s = rec.steps();
     const auto t = column(s, [](auto& k) { return k.time; });
-    p.lines.push_back({t, column(s, [](auto& k) { return k.wheels.right; }), colors::kFront, 1.2,
-                       false, "V1 (right)"});
-    p.lines.push_back({t, column(s, [](auto& k) { return k.wheels.left; }), colors::kRear, 1.2,
-                       false, "V2 (left)"});
+    for (const TimeSeries& series : {first, second}) {
+        p.lines.push_back({t, column(s, series.pick), series.color, 1.2, false, series.label});
+    }
     figure.write(base);
 }
 
@@ -182,8 +178,18 @@ std::vector<std::string> write_run_plots(const RunRecording& recording, const si
     trajectory(recording, world, path("trajectory"), title);
     errors(recording, path("errors"), title);
     covariance(recording, path("covariance"), title);
-    ir_distances(recording, path("ir_distances"), title);
-    wheel_speeds(recording, path("wheel_speeds"), title);
+    two_series(
+        recording, path("ir_distances"), title + " — IR distances",
+        "IR distances ds1 (front) and ds2 (rear), in range only", "distance (m)",
+        {[](const RunRecording::Step& k) { return k.ir_distance[0]; }, colors::kFront,
+         "ds1 (front)"},
+        {[](const RunRecording::Step& k) { return k.ir_distance[1]; }, colors::kRear, "ds2 (rear)"},
+        0.32);
+    two_series(
+        recording, path("wheel_speeds"), title + " — wheel speeds",
+        "Commanded wheel speeds V1 (right) and V2 (left)", "speed (m/s)",
+        {[](const RunRecording::Step& k) { return k.wheels.right; }, colors::kFront, "V1 (right)"},
+        {[](const RunRecording::Step& k) { return k.wheels.left; }, colors::kRear, "V2 (left)"});
     return {"trajectory", "errors", "covariance", "ir_distances", "wheel_speeds"};
 }
 

@@ -9,22 +9,10 @@
 #include "legofeup/core/wall_measurement.hpp"
 
 namespace legofeup {
-namespace {
-
-std::string describe(const std::vector<ConfigIssue>& issues) {
-    std::string text = "invalid loop configuration:";
-    for (const ConfigIssue& issue : issues) {
-        text += "\n  " + issue.message();
-    }
-    return text;
-}
-
-}  // namespace
-
 LegoFeupLoop::LegoFeupLoop(LoopConfig config)
     : config_(std::move(config)), controller_(config_.controller) {
     if (const auto issues = validate(config_); !issues.empty()) {
-        throw std::invalid_argument(describe(issues));
+        throw invalid_configuration("loop", issues);
     }
     apply_tuning();
     reset();

@@ -1,48 +1,13 @@
 #include "legofeup/core/loop_config.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <type_traits>
 #include <variant>
 
 namespace legofeup {
 namespace {
 
-std::string format_number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
-
-class Checker {
-  public:
-    explicit Checker(std::vector<ConfigIssue>& issues) : issues_(issues) {}
-
-    void require(bool ok, const std::string& field, double value, const std::string& reason) {
-        if (!ok) {
-            issues_.push_back({field, format_number(value), reason});
-        }
-    }
-    void finite(const std::string& field, double value) {
-        require(std::isfinite(value), field, value, "must be a finite number");
-    }
-    void in_range(const std::string& field, double value, double low, double high) {
-        require(std::isfinite(value) && value >= low && value <= high, field, value,
-                "must be between " + format_number(low) + " and " + format_number(high));
-    }
-    void positive(const std::string& field, double value, double high) {
-        require(std::isfinite(value) && value > 0.0 && value <= high, field, value,
-                "must be greater than 0 and at most " + format_number(high));
-    }
-    void variance(const std::string& field, double value) {
-        in_range(field, value, kMinUserVariance, kMaxUserVariance);
-    }
-
-  private:
-    std::vector<ConfigIssue>& issues_;
-};
-
-void check_ir_curve(Checker& check, const SharpIrCurve& curve, const std::string& prefix) {
+void check_ir_curve(ConfigChecker& check, const SharpIrCurve& curve, const std::string& prefix) {
     const std::string p = prefix + ".";
     check.positive(p + "a", curve.a, 1.0);
     check.positive(p + "c_m", curve.c_m, 1e7);
@@ -66,7 +31,7 @@ void check_ir_curve(Checker& check, const SharpIrCurve& curve, const std::string
                   "puts the trusted range outside the A/D scale 0…adc_max");
 }
 
-void check_ir_mount(Checker& check, const IrMount& mount, const std::string& prefix) {
+void check_ir_mount(ConfigChecker& check, const IrMount& mount, const std::string& prefix) {
     const std::string p = prefix + ".";
     check.in_range(p + "front_longitudinal", mount.front_longitudinal, -1.0, 1.0);
     check.in_range(p + "rear_longitudinal", mount.rear_longitudinal, -1.0, 1.0);
@@ -75,7 +40,7 @@ void check_ir_mount(Checker& check, const IrMount& mount, const std::string& pre
     check.in_range(p + "lateral_offset", mount.lateral_offset, -1.0, 1.0);
 }
 
-void check_controller(Checker& check, const Controller& controller) {
+void check_controller(ConfigChecker& check, const Controller& controller) {
     std::visit(
         [&](const auto& routine) {
             using Routine = std::decay_t<decltype(routine)>;
@@ -105,29 +70,29 @@ void check_controller(Checker& check, const Controller& controller) {
         controller);
 }
 
+void check_variance(ConfigChecker& check, const std::string& field, double value) {
+    check.in_range(field, value, kMinUserVariance, kMaxUserVariance);
+}
+
 }  // namespace
 
 std::vector<ConfigIssue> validate(const SharpIrCurve& curve, const std::string& prefix) {
     std::vector<ConfigIssue> issues;
-    Checker check(issues);
+    ConfigChecker check(issues);
     check_ir_curve(check, curve, prefix);
     return issues;
 }
 
 std::vector<ConfigIssue> validate(const IrMount& mount, const std::string& prefix) {
     std::vector<ConfigIssue> issues;
-    Checker check(issues);
+    ConfigChecker check(issues);
     check_ir_mount(check, mount, prefix);
     return issues;
 }
 
-std::string ConfigIssue::message() const {
-    return field + " = " + value + ": " + reason;
-}
-
 std::vector<ConfigIssue> validate(const LoopConfig& config) {
     std::vector<ConfigIssue> issues;
-    Checker check(issues);
+    ConfigChecker check(issues);
 
     check.positive("odometry.codo_right", config.odometry.codo_right, 1e6);
     check.positive("odometry.codo_left", config.odometry.codo_left, 1e6);
@@ -153,10 +118,10 @@ std::vector<ConfigIssue> validate(const LoopConfig& config) {
     check.positive("association.max_distance_error", assoc.max_distance_error, 10.0);
 
     const FilterTuning& filter = config.filter;
-    check.variance("filter.q11", filter.q11);
-    check.variance("filter.q22", filter.q22);
-    check.variance("filter.r11", filter.r11);
-    check.variance("filter.r22", filter.r22);
+    check_variance(check, "filter.q11", filter.q11);
+    check_variance(check, "filter.q22", filter.q22);
+    check_variance(check, "filter.r11", filter.r11);
+    check_variance(check, "filter.r22", filter.r22);
     check.require(filter.gate_probability > 0.0 && filter.gate_probability < 1.0,
                   "filter.gate_probability", filter.gate_probability,
                   "must be strictly between 0 and 1");
@@ -169,9 +134,9 @@ std::vector<ConfigIssue> validate(const LoopConfig& config) {
     check.in_range("initial.x", config.initial.pose.x, -1e4, 1e4);
     check.in_range("initial.y", config.initial.pose.y, -1e4, 1e4);
     check.in_range("initial.theta", config.initial.pose.theta, -2.0 * kPi, 2.0 * kPi);
-    check.variance("initial.var_x", config.initial.var_x);
-    check.variance("initial.var_y", config.initial.var_y);
-    check.variance("initial.var_theta", config.initial.var_theta);
+    check_variance(check, "initial.var_x", config.initial.var_x);
+    check_variance(check, "initial.var_y", config.initial.var_y);
+    check_variance(check, "initial.var_theta", config.initial.var_theta);
 
     check.positive("motion.v_ref", config.motion.v_ref, 2.0);
     check.positive("motion.w_ref", config.motion.w_ref, 20.0);

@@ -27,6 +27,15 @@ OdometryIncrement odometry_increment(std::int32_t pulses_right, std::int32_t pul
     return inc;
 }
 
+OdometryIncrement increment_from_motion(double distance, double rotation, double wheel_base) {
+    OdometryIncrement inc;
+    inc.distance = distance;
+    inc.rotation = rotation;
+    inc.d_right = distance + 0.5 * wheel_base * rotation;
+    inc.d_left = distance - 0.5 * wheel_base * rotation;
+    return inc;
+}
+
 Pose2 advance_pose(const Pose2& pose, double distance, double rotation) {
     const double mid_heading = pose.theta + 0.5 * rotation;  // θ + Δθ/2
     return {pose.x + distance * std::cos(mid_heading), pose.y + distance * std::sin(mid_heading),

@@ -1,7 +1,6 @@
 #include "legofeup/lessons/run_config.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include "legofeup/lessons/config_schema.hpp"
 #include "legofeup/lessons/input_error.hpp"
@@ -11,12 +10,6 @@ namespace legofeup::lessons {
 namespace {
 
 constexpr double kSecondsPerLap = 200.0;  // a lap takes ~90 s; a lost robot gets twice that
-
-std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
 
 // A validation issue, pointed at the setting the user wrote and where they wrote it.
 InputProblem locate(const RunConfig& config, const ConfigIssue& issue) {
@@ -30,17 +23,6 @@ InputProblem locate(const RunConfig& config, const ConfigIssue& issue) {
         problem.key = origin->second.key;
     }
     return problem;
-}
-
-void check_range(std::vector<ConfigIssue>& issues, const char* field, double value, double low,
-                 double high, bool zero_allowed = false) {
-    const bool ok =
-        std::isfinite(value) && ((zero_allowed && value == 0.0) || (value >= low && value <= high));
-    if (!ok) {
-        issues.push_back({field, number_text(value),
-                          "must be between " + number_text(low) + " and " + number_text(high)
-                              + (zero_allowed ? " (or 0)" : "")});
-    }
 }
 
 Controller make_controller(const RunConfig& config, const sim::WorldSpec& world) {
@@ -84,11 +66,12 @@ ResolvedRun resolve(const RunConfig& config) {
     }
 
     std::vector<ConfigIssue> issues;
-    check_range(issues, "duration", config.duration, 1.0, 1e6, true);
-    check_range(issues, "robot.wheel_diameter", config.robot.wheel_diameter, 0.005, 1.0);
-    check_range(issues, "robot.counts_per_turn", config.robot.counts_per_turn, 1.0, 1e6);
-    check_range(issues, "odometry.codo_right", config.robot.codo_right, 1.0, 1e6, true);
-    check_range(issues, "odometry.codo_left", config.robot.codo_left, 1.0, 1e6, true);
+    ConfigChecker check(issues);
+    check.in_range_or_zero("duration", config.duration, 1.0, 1e6);
+    check.in_range("robot.wheel_diameter", config.robot.wheel_diameter, 0.005, 1.0);
+    check.in_range("robot.counts_per_turn", config.robot.counts_per_turn, 1.0, 1e6);
+    check.in_range_or_zero("odometry.codo_right", config.robot.codo_right, 1.0, 1e6);
+    check.in_range_or_zero("odometry.codo_left", config.robot.codo_left, 1.0, 1e6);
 
     // The filter's side: the robot as it is believed to be built, and the world's walls.
     const double nominal_codo =

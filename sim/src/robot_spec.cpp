@@ -1,7 +1,6 @@
 #include "legofeup/sim/robot_spec.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 namespace legofeup::sim {
@@ -17,14 +16,9 @@ double RobotSpec::left_wheel_diameter() const {
 
 std::vector<ConfigIssue> validate(const RobotSpec& robot) {
     std::vector<ConfigIssue> issues;
+    ConfigChecker checker(issues);
     const auto check = [&](const char* name, double value, double low, double high) {
-        if (!(std::isfinite(value) && value >= low && value <= high)) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%.6g", value);
-            char bounds[96];
-            std::snprintf(bounds, sizeof bounds, "must be between %.6g and %.6g", low, high);
-            issues.push_back({std::string("simulator.") + name, text, bounds});
-        }
+        checker.in_range(std::string("simulator.") + name, value, low, high);
     };
     check("wheel_diameter", robot.wheel_diameter, 0.005, 1.0);
     check("wheel_diameter_ratio", robot.wheel_diameter_ratio, 0.5, 2.0);

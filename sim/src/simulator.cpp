@@ -3,7 +3,6 @@
 #include <box2d/box2d.h>
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
@@ -18,34 +17,17 @@ namespace {
 constexpr int kVelocityIterations = 6;
 constexpr int kPositionIterations = 2;
 
-std::string describe(const std::vector<ConfigIssue>& issues) {
-    std::string text = "invalid simulator configuration:";
-    for (const ConfigIssue& issue : issues) {
-        text += "\n  " + issue.message();
-    }
-    return text;
-}
-
 }  // namespace
 
 std::vector<ConfigIssue> validate(const SimulatorSettings& settings) {
     std::vector<ConfigIssue> issues;
-    const auto text = [](double value) {
-        char buffer[32];
-        std::snprintf(buffer, sizeof buffer, "%.6g", value);
-        return std::string(buffer);
-    };
-    if (!(settings.physics_rate >= 100.0 && settings.physics_rate <= 10000.0)) {
-        issues.push_back({"simulator.physics_rate", text(settings.physics_rate),
-                          "must be between 100 and 10000 Hz"});
-    } else {
-        const double steps = settings.control_period * settings.physics_rate;
-        if (!(settings.control_period > 0.0 && settings.control_period <= 1.0)
-            || std::abs(steps - std::round(steps)) > 1e-9 || std::round(steps) < 1.0) {
-            issues.push_back({"simulator.control_period", text(settings.control_period),
-                              "must be a whole number of physics steps, at most 1 s"});
-        }
-    }
+    ConfigChecker check(issues);
+    check.in_range("simulator.physics_rate", settings.physics_rate, 100.0, 10000.0);
+    const double steps = settings.control_period * settings.physics_rate;
+    check.require(settings.control_period > 0.0 && settings.control_period <= 1.0
+                      && std::abs(steps - std::round(steps)) <= 1e-9 && std::round(steps) >= 1.0,
+                  "simulator.control_period", settings.control_period,
+                  "must be a whole number of physics steps, at most 1 s");
     return issues;
 }
 
@@ -188,7 +170,7 @@ Simulator::Simulator(WorldSpec world, RobotSpec robot, SimulatorSettings setting
     const auto more = validate(settings);
     issues.insert(issues.end(), more.begin(), more.end());
     if (!issues.empty()) {
-        throw std::invalid_argument(describe(issues));
+        throw invalid_configuration("simulator", issues);
     }
     const Pose2 start = world.start;
     state_ = std::make_unique<State>(std::move(world), std::move(robot), settings);
@@ -214,7 +196,7 @@ void Simulator::set_wheel_command(const WheelSpeeds& command) {
 
 void Simulator::set_robot(const RobotSpec& robot) {
     if (const auto issues = validate(robot); !issues.empty()) {
-        throw std::invalid_argument(describe(issues));
+        throw invalid_configuration("simulator", issues);
     }
     state_->robot = robot;
     state_->drive_train.set_spec(robot);

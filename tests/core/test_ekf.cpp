@@ -19,10 +19,7 @@ using Ekf = ExtendedKalmanFilter<PoseStateSpace>;
 using testing::Uniform;
 
 OdometryIncrement increment(double distance, double rotation) {
-    OdometryIncrement inc;
-    inc.distance = distance;
-    inc.rotation = rotation;
-    return inc;
+    return increment_from_motion(distance, rotation, 0.12);
 }
 
 double min_eigenvalue(const StateCovariance& P) {

@@ -48,10 +48,8 @@ TEST(EkfConsistency, AveragedNeesAndNisStayInsideChiSquareBounds) {
         ExtendedKalmanFilter<PoseStateSpace> ekf;
         ASSERT_TRUE(ekf.reset(x0, P0));
         for (int k = 0; k < kSteps; ++k) {
-            OdometryIncrement u;
-            u.distance = 0.005;
-            u.rotation = 0.002 * std::sin(0.05 * k);
-            const OdometryProcessModel model(u, Q);
+            const OdometryProcessModel model(
+                increment_from_motion(0.005, 0.002 * std::sin(0.05 * k), 0.12), Q);
             const Eigen::Vector2d q(std::sqrt(Q(0, 0)) * unit(rng), std::sqrt(Q(1, 1)) * unit(rng));
             truth = model.propagate(truth, q);  // the truth moves with the assumed noise
             ASSERT_EQ(ekf.predict(model), StepStatus::Applied);

@@ -63,6 +63,14 @@ TEST(Odometry, UsesEachWheelsOwnCountsPerMetre) {
     EXPECT_NEAR(inc.rotation, 0.2, 1e-12);  // (0.1 − 0.08)/0.1
 }
 
+TEST(Odometry, IncrementFromMotionInvertsEquationEight) {
+    const OdometryIncrement inc = increment_from_motion(0.05, 0.2, 0.12);
+    EXPECT_NEAR(inc.d_right, 0.05 + 0.012, 1e-15);
+    EXPECT_NEAR(inc.d_left, 0.05 - 0.012, 1e-15);
+    EXPECT_NEAR(0.5 * (inc.d_right + inc.d_left), inc.distance, 1e-15);   // eq. 8
+    EXPECT_NEAR((inc.d_right - inc.d_left) / 0.12, inc.rotation, 1e-15);  // eq. 8
+}
+
 TEST(Odometry, StraightSegmentHandWorked) {
     // Ten periods of 100 counts each from the path's start, heading +x.
     Pose2 pose{-1.0, -1.0, 0.0};

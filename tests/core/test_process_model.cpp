@@ -13,10 +13,7 @@ namespace {
 using testing::Uniform;
 
 OdometryIncrement increment(double distance, double rotation) {
-    OdometryIncrement inc;
-    inc.distance = distance;
-    inc.rotation = rotation;
-    return inc;
+    return increment_from_motion(distance, rotation, 0.12);
 }
 
 TEST(OdometryProcessModel, StateJacobianMatchesCentralDifferences) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "legofeup/core/config_issue.hpp"
 #include "legofeup/core/controller.hpp"
 #include "legofeup/core/covariance_guard.hpp"
 #include "legofeup/core/ir_geometry.hpp"
@@ -53,15 +54,6 @@ struct LoopConfig {
     /// m: a wheel moving farther than this in one period is an encoder glitch (e.g. a
     /// counter reset on the robot); that period's odometry is skipped and flagged.
     double max_wheel_travel_per_step = 0.25;
-};
-
-/// One problem with a configuration: which field, what value, and why it was refused.
-struct ConfigIssue {
-    std::string field;   ///< e.g. "filter.q11"
-    std::string value;   ///< the offending value as text
-    std::string reason;  ///< e.g. "must be between 1e-15 and 1e+09"
-
-    std::string message() const;  ///< "filter.q11 = -1: must be …"
 };
 
 /// Everything wrong with `config` (empty when it is usable).

@@ -38,6 +38,10 @@ std::int32_t encoder_delta(std::int32_t now, std::int32_t before);
 OdometryIncrement odometry_increment(std::int32_t pulses_right, std::int32_t pulses_left,
                                      const OdometryParams& params);
 
+/// The increment of a robot that moved `distance` while turning `rotation` (the inverse of
+/// eq. 8: d1 = d + b·Δθ/2, d2 = d − b·Δθ/2).
+OdometryIncrement increment_from_motion(double distance, double rotation, double wheel_base);
+
 /// Eq. 7 with the noise of eq. 10: advances a pose by (d + ε_d, Δθ + ε_Δθ) along the
 /// centred-difference heading θ + (Δθ + ε_Δθ)/2. The heading is wrapped to (−π, π].
 Pose2 advance_pose(const Pose2& pose, double distance, double rotation);
