@@ -46,6 +46,13 @@ TEST(Experiments, PresetsSetWhatEachStepIsAbout) {
     EXPECT_LE(d.filter.q11, 1e-10);  // Q very low
     const RunConfig& e = find_experiment("e")->config;
     EXPECT_GE(e.filter.q22, 1e-2);  // Q very high
+    const RunConfig& f = find_experiment("f")->config;
+    EXPECT_EQ(f.filter.r11, 1e-4);  // R = the injected noise; Q tuned
+    for (const char* id : {"a", "b", "c"}) {
+        // These steps do not touch Q: they keep the starting values, written in the file.
+        EXPECT_EQ(find_experiment(id)->config.filter.q11, 1e-7) << id;
+        EXPECT_EQ(find_experiment(id)->config.origins.count("filter.q11"), 1u) << id;
+    }
     for (const Experiment& experiment : legofeup_experiments()) {
         // Every step runs the same robot with the same systematic errors.
         EXPECT_EQ(experiment.config.physical.wheel_diameter_ratio, 1.005) << experiment.id;
