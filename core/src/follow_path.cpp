@@ -31,30 +31,31 @@ FollowPath::Active FollowPath::start_segment(const PathSegment& segment) {
 
 ControlOutput FollowPath::step(const Pose2& estimate, const MotionLimits& limits,
                                const ControllerGains& gains) {
-    if (finished()) {
-        ControlOutput stopped;
-        stopped.finished = true;
-        return stopped;
-    }
-    ControlOutput out =
-        std::visit([&](auto& routine) { return routine.step(estimate, limits, gains); }, active_);
-    if (out.finished) {
-        // The segment is done: move on (and count the lap when the path wraps around).
-        index_ = (index_ + 1) % static_cast<int>(segments_.size());
-        if (index_ == 0) {
-            ++completed_laps_;
+    const auto follow_active_segment = [&] {
+        return std::visit([&](auto& routine) { return routine.step(estimate, limits, gains); },
+                          active_);
+    };
+    if (!finished()) {
+        ControlOutput out = follow_active_segment();
+        if (out.finished) {
+            // The segment is done: move on (and count the lap when the path wraps around).
+            index_ = (index_ + 1) % static_cast<int>(segments_.size());
+            if (index_ == 0) {
+                ++completed_laps_;
+            }
+            active_ = start_segment(segments_[static_cast<std::size_t>(index_)]);
+            if (!finished()) {
+                out = follow_active_segment();
+            }
         }
-        active_ = start_segment(segments_[static_cast<std::size_t>(index_)]);
-        if (finished()) {
-            ControlOutput stopped;
-            stopped.finished = true;
-            return stopped;
+        if (!finished()) {
+            out.finished = false;  // a segment ended, not the path
+            return out;
         }
-        out = std::visit([&](auto& routine) { return routine.step(estimate, limits, gains); },
-                         active_);
     }
-    out.finished = false;
-    return out;
+    ControlOutput stopped;  // all laps driven: stand still
+    stopped.finished = true;
+    return stopped;
 }
 
 }  // namespace legofeup

@@ -2,54 +2,64 @@
 
 #include <charconv>
 #include <cmath>
+#include <type_traits>
 
 #include "legofeup/core/angles.hpp"
 
 namespace legofeup::lessons {
 namespace {
 
-using Access = std::function<double&(RunConfig&)>;
-
-// A real-valued setting stored as `stored = written × scale` (degrees → radians).
-Setting real(std::string key, std::string field, std::string help, Access access,
-             double scale = 1.0) {
-    Setting s{std::move(key), std::move(field), std::move(help), SettingType::Real, {}, {}, {}, {}};
+// A setting bound to one member of the configuration. `access` is a generic lambda,
+// `[](auto& c) -> auto& { return c.member; }`, so the same accessor reads a const
+// configuration and writes a mutable one: reading never copies the configuration. Real
+// values are stored as `written × scale` (degrees → radians).
+template <class T, class Access>
+Setting bound(std::string key, std::string field, std::string help, SettingType type, Access access,
+              double scale = 1.0) {
+    Setting s;
+    s.key = std::move(key);
+    s.field = std::move(field);
+    s.help = std::move(help);
+    s.type = type;
     s.get = [access, scale](const RunConfig& c) -> SettingValue {
-        RunConfig copy = c;
-        return access(copy) / scale;
+        if constexpr (std::is_same_v<T, double>) {
+            return access(c) / scale;
+        } else {
+            return access(c);
+        }
     };
     s.set = [access, scale](RunConfig& c, const SettingValue& v) {
-        access(c) = std::get<double>(v) * scale;
+        if constexpr (std::is_same_v<T, double>) {
+            access(c) = std::get<double>(v) * scale;
+        } else {
+            access(c) = std::get<T>(v);
+        }
     };
     return s;
 }
 
+template <class Access>
+Setting real(std::string key, std::string field, std::string help, Access access) {
+    return bound<double>(std::move(key), std::move(field), std::move(help), SettingType::Real,
+                         access);
+}
+
+template <class Access>
 Setting degrees(std::string key, std::string field, std::string help, Access access) {
-    return real(std::move(key), std::move(field), std::move(help), std::move(access), kPi / 180.0);
+    return bound<double>(std::move(key), std::move(field), std::move(help), SettingType::Real,
+                         access, kPi / 180.0);
 }
 
-Setting boolean(std::string key, std::string field, std::string help,
-                std::function<bool&(RunConfig&)> access) {
-    Setting s{
-        std::move(key), std::move(field), std::move(help), SettingType::Boolean, {}, {}, {}, {}};
-    s.get = [access](const RunConfig& c) -> SettingValue {
-        RunConfig copy = c;
-        return access(copy);
-    };
-    s.set = [access](RunConfig& c, const SettingValue& v) { access(c) = std::get<bool>(v); };
-    return s;
+template <class Access>
+Setting boolean(std::string key, std::string field, std::string help, Access access) {
+    return bound<bool>(std::move(key), std::move(field), std::move(help), SettingType::Boolean,
+                       access);
 }
 
-Setting point(std::string key, std::string field, std::string help,
-              std::function<Vector2&(RunConfig&)> access) {
-    Setting s{
-        std::move(key), std::move(field), std::move(help), SettingType::Point, {}, {}, {}, {}};
-    s.get = [access](const RunConfig& c) -> SettingValue {
-        RunConfig copy = c;
-        return access(copy);
-    };
-    s.set = [access](RunConfig& c, const SettingValue& v) { access(c) = std::get<Vector2>(v); };
-    return s;
+template <class Access>
+Setting point(std::string key, std::string field, std::string help, Access access) {
+    return bound<Vector2>(std::move(key), std::move(field), std::move(help), SettingType::Point,
+                          access);
 }
 
 // One part of a pose override (the world's start pose unless set).
@@ -106,9 +116,10 @@ std::vector<Setting> make_settings() {
         c.laps = static_cast<int>(std::get<std::int64_t>(v));
     };
     s.push_back(laps);
-    s.push_back(real("duration", "duration",
-                     "simulated seconds for routines other than the square; 0: 200 s per lap",
-                     [](RunConfig& c) -> double& { return c.duration; }));
+    s.push_back(real(
+        "duration", "duration",
+        "simulated seconds for routines other than the square; 0: 200 s per lap",
+        [](auto& c) -> auto& { return c.duration; }));
     Setting world{"world",
                   "world",
                   "world file (relative to this file); empty: built-in arena",
@@ -124,27 +135,35 @@ std::vector<Setting> make_settings() {
     s.push_back(world);
 
     // [filter] — the EKF's noise model (paper: Q over [ε_d, ε_Δθ], R over [ε_ds1, ε_ds2]).
-    s.push_back(real("filter.q11", "filter.q11", "Q11: variance of ε_d per 50 ms period, m²",
-                     [](RunConfig& c) -> double& { return c.filter.q11; }));
-    s.push_back(real("filter.q22", "filter.q22", "Q22: variance of ε_Δθ per period, rad²",
-                     [](RunConfig& c) -> double& { return c.filter.q22; }));
-    s.push_back(real("filter.r11", "filter.r11", "R11: variance of the front IR distance, m²",
-                     [](RunConfig& c) -> double& { return c.filter.r11; }));
-    s.push_back(real("filter.r22", "filter.r22", "R22: variance of the rear IR distance, m²",
-                     [](RunConfig& c) -> double& { return c.filter.r22; }));
-    s.push_back(boolean("filter.wall_updates", "filter.wall_updates",
-                        "false: odometry only (walls are associated but never used)",
-                        [](RunConfig& c) -> bool& { return c.filter.wall_updates; }));
-    s.push_back(boolean("filter.gate", "filter.gate_enabled",
-                        "reject updates whose NIS exceeds the χ²(2) gate",
-                        [](RunConfig& c) -> bool& { return c.filter.gate_enabled; }));
-    s.push_back(real("filter.gate_probability", "filter.gate_probability",
-                     "probability of the Mahalanobis gate, in (0, 1)",
-                     [](RunConfig& c) -> double& { return c.filter.gate_probability; }));
-    s.push_back(real("filter.min_variance", "filter.min_variance", "floor on every variance of P",
-                     [](RunConfig& c) -> double& { return c.filter.limits.min_variance; }));
-    s.push_back(real("filter.max_variance", "filter.max_variance", "ceiling on every variance of P",
-                     [](RunConfig& c) -> double& { return c.filter.limits.max_variance; }));
+    s.push_back(real(
+        "filter.q11", "filter.q11", "Q11: variance of ε_d per 50 ms period, m²",
+        [](auto& c) -> auto& { return c.filter.q11; }));
+    s.push_back(real(
+        "filter.q22", "filter.q22", "Q22: variance of ε_Δθ per period, rad²",
+        [](auto& c) -> auto& { return c.filter.q22; }));
+    s.push_back(real(
+        "filter.r11", "filter.r11", "R11: variance of the front IR distance, m²",
+        [](auto& c) -> auto& { return c.filter.r11; }));
+    s.push_back(real(
+        "filter.r22", "filter.r22", "R22: variance of the rear IR distance, m²",
+        [](auto& c) -> auto& { return c.filter.r22; }));
+    s.push_back(boolean(
+        "filter.wall_updates", "filter.wall_updates",
+        "false: odometry only (walls are associated but never used)",
+        [](auto& c) -> auto& { return c.filter.wall_updates; }));
+    s.push_back(boolean(
+        "filter.gate", "filter.gate_enabled", "reject updates whose NIS exceeds the χ²(2) gate",
+        [](auto& c) -> auto& { return c.filter.gate_enabled; }));
+    s.push_back(real(
+        "filter.gate_probability", "filter.gate_probability",
+        "probability of the Mahalanobis gate, in (0, 1)",
+        [](auto& c) -> auto& { return c.filter.gate_probability; }));
+    s.push_back(real(
+        "filter.min_variance", "filter.min_variance", "floor on every variance of P",
+        [](auto& c) -> auto& { return c.filter.limits.min_variance; }));
+    s.push_back(real(
+        "filter.max_variance", "filter.max_variance", "ceiling on every variance of P",
+        [](auto& c) -> auto& { return c.filter.limits.max_variance; }));
 
     // [initial] — the belief the filter starts from.
     s.push_back(pose_part("initial.x", "initial.x", "believed start x, m (default: world start)",
@@ -154,12 +173,15 @@ std::vector<Setting> make_settings() {
     s.push_back(pose_part("initial.heading_deg", "initial.theta",
                           "believed start heading, ° (default: world start)",
                           &RunConfig::initial_pose, &PoseOverride::theta, kPi / 180.0));
-    s.push_back(real("initial.var_x", "initial.var_x", "P0: variance of x, m²",
-                     [](RunConfig& c) -> double& { return c.initial.var_x; }));
-    s.push_back(real("initial.var_y", "initial.var_y", "P0: variance of y, m²",
-                     [](RunConfig& c) -> double& { return c.initial.var_y; }));
-    s.push_back(real("initial.var_theta", "initial.var_theta", "P0: variance of θ, rad²",
-                     [](RunConfig& c) -> double& { return c.initial.var_theta; }));
+    s.push_back(real(
+        "initial.var_x", "initial.var_x", "P0: variance of x, m²",
+        [](auto& c) -> auto& { return c.initial.var_x; }));
+    s.push_back(real(
+        "initial.var_y", "initial.var_y", "P0: variance of y, m²",
+        [](auto& c) -> auto& { return c.initial.var_y; }));
+    s.push_back(real(
+        "initial.var_theta", "initial.var_theta", "P0: variance of θ, rad²",
+        [](auto& c) -> auto& { return c.initial.var_theta; }));
 
     // [control] — the path-control routine.
     Setting routine{"control.routine",
@@ -184,144 +206,189 @@ std::vector<Setting> make_settings() {
         }
     };
     s.push_back(routine);
-    s.push_back(real("control.v_ref", "motion.v_ref", "V_ref: reference speed, m/s",
-                     [](RunConfig& c) -> double& { return c.motion.v_ref; }));
-    s.push_back(real("control.w_ref", "motion.w_ref", "W_ref: largest turn rate, rad/s",
-                     [](RunConfig& c) -> double& { return c.motion.w_ref; }));
-    s.push_back(real("control.heading_gain", "gains.heading_gain",
-                     "k_θ: W = k_θ·heading error, 1/s",
-                     [](RunConfig& c) -> double& { return c.gains.heading_gain; }));
-    s.push_back(real("control.cross_track_gain", "gains.cross_track_gain",
-                     "k_e: approach angle atan(k_e·offset), 1/m",
-                     [](RunConfig& c) -> double& { return c.gains.cross_track_gain; }));
-    s.push_back(real("control.distance_gain", "gains.distance_gain",
-                     "k_ρ: GoXYTheta slows to k_ρ·distance, 1/s",
-                     [](RunConfig& c) -> double& { return c.gains.distance_gain; }));
-    s.push_back(real("control.position_tolerance", "gains.position_tolerance",
-                     "GoXYTheta arrival distance, m",
-                     [](RunConfig& c) -> double& { return c.gains.position_tolerance; }));
-    s.push_back(degrees("control.heading_tolerance_deg", "gains.heading_tolerance",
-                        "GoXYTheta final heading tolerance, °",
-                        [](RunConfig& c) -> double& { return c.gains.heading_tolerance; }));
-    s.push_back(real("control.max_wheel_speed", "max_wheel_speed", "wheel speed limit, m/s",
-                     [](RunConfig& c) -> double& { return c.max_wheel_speed; }));
-    s.push_back(point("control.line_from", "controller.from", "line: first point [x, y], m",
-                      [](RunConfig& c) -> Vector2& { return c.routine.line_from; }));
-    s.push_back(point("control.line_to", "controller.to", "line: second point [x, y], m",
-                      [](RunConfig& c) -> Vector2& { return c.routine.line_to; }));
-    s.push_back(point("control.circle_centre", "controller.centre", "circle: centre [x, y], m",
-                      [](RunConfig& c) -> Vector2& { return c.routine.circle_centre; }));
-    s.push_back(real("control.circle_radius", "controller.radius", "circle: radius, m",
-                     [](RunConfig& c) -> double& { return c.routine.circle_radius; }));
-    s.push_back(boolean("control.circle_clockwise", "controller.clockwise",
-                        "circle: true for clockwise",
-                        [](RunConfig& c) -> bool& { return c.routine.circle_clockwise; }));
-    s.push_back(real("control.goto_x", "controller.target.x", "goto: target x, m",
-                     [](RunConfig& c) -> double& { return c.routine.goto_target.x; }));
-    s.push_back(real("control.goto_y", "controller.target.y", "goto: target y, m",
-                     [](RunConfig& c) -> double& { return c.routine.goto_target.y; }));
-    s.push_back(degrees("control.goto_heading_deg", "controller.target.theta",
-                        "goto: final heading, °",
-                        [](RunConfig& c) -> double& { return c.routine.goto_target.theta; }));
+    s.push_back(real(
+        "control.v_ref", "motion.v_ref", "V_ref: reference speed, m/s",
+        [](auto& c) -> auto& { return c.motion.v_ref; }));
+    s.push_back(real(
+        "control.w_ref", "motion.w_ref", "W_ref: largest turn rate, rad/s",
+        [](auto& c) -> auto& { return c.motion.w_ref; }));
+    s.push_back(real(
+        "control.heading_gain", "gains.heading_gain", "k_θ: W = k_θ·heading error, 1/s",
+        [](auto& c) -> auto& { return c.gains.heading_gain; }));
+    s.push_back(real(
+        "control.cross_track_gain", "gains.cross_track_gain",
+        "k_e: approach angle atan(k_e·offset), 1/m",
+        [](auto& c) -> auto& { return c.gains.cross_track_gain; }));
+    s.push_back(real(
+        "control.distance_gain", "gains.distance_gain", "k_ρ: GoXYTheta slows to k_ρ·distance, 1/s",
+        [](auto& c) -> auto& { return c.gains.distance_gain; }));
+    s.push_back(real(
+        "control.position_tolerance", "gains.position_tolerance", "GoXYTheta arrival distance, m",
+        [](auto& c) -> auto& { return c.gains.position_tolerance; }));
+    s.push_back(degrees(
+        "control.heading_tolerance_deg", "gains.heading_tolerance",
+        "GoXYTheta final heading tolerance, °",
+        [](auto& c) -> auto& { return c.gains.heading_tolerance; }));
+    s.push_back(real(
+        "control.max_wheel_speed", "max_wheel_speed", "wheel speed limit, m/s",
+        [](auto& c) -> auto& { return c.max_wheel_speed; }));
+    s.push_back(point(
+        "control.line_from", "controller.from", "line: first point [x, y], m",
+        [](auto& c) -> auto& { return c.routine.line_from; }));
+    s.push_back(point(
+        "control.line_to", "controller.to", "line: second point [x, y], m",
+        [](auto& c) -> auto& { return c.routine.line_to; }));
+    s.push_back(point(
+        "control.circle_centre", "controller.centre", "circle: centre [x, y], m",
+        [](auto& c) -> auto& { return c.routine.circle_centre; }));
+    s.push_back(real(
+        "control.circle_radius", "controller.radius", "circle: radius, m",
+        [](auto& c) -> auto& { return c.routine.circle_radius; }));
+    s.push_back(boolean(
+        "control.circle_clockwise", "controller.clockwise", "circle: true for clockwise",
+        [](auto& c) -> auto& { return c.routine.circle_clockwise; }));
+    s.push_back(real(
+        "control.goto_x", "controller.target.x", "goto: target x, m",
+        [](auto& c) -> auto& { return c.routine.goto_target.x; }));
+    s.push_back(real(
+        "control.goto_y", "controller.target.y", "goto: target y, m",
+        [](auto& c) -> auto& { return c.routine.goto_target.y; }));
+    s.push_back(degrees(
+        "control.goto_heading_deg", "controller.target.theta", "goto: final heading, °",
+        [](auto& c) -> auto& { return c.routine.goto_target.theta; }));
 
     // [robot] — the robot as the filter assumes it is built.
-    s.push_back(real("robot.wheel_diameter", "robot.wheel_diameter", "wheel diameter, m",
-                     [](RunConfig& c) -> double& { return c.robot.wheel_diameter; }));
-    s.push_back(real("robot.wheel_base", "odometry.wheel_base", "b: distance between the wheels, m",
-                     [](RunConfig& c) -> double& { return c.robot.wheel_base; }));
-    s.push_back(real("robot.counts_per_turn", "robot.counts_per_turn",
-                     "encoder counts per wheel turn",
-                     [](RunConfig& c) -> double& { return c.robot.counts_per_turn; }));
-    s.push_back(real("robot.codo_right", "odometry.codo_right",
-                     "Codo1: right wheel counts per metre; 0: from the diameter",
-                     [](RunConfig& c) -> double& { return c.robot.codo_right; }));
-    s.push_back(real("robot.codo_left", "odometry.codo_left",
-                     "Codo2: left wheel counts per metre; 0: from the diameter",
-                     [](RunConfig& c) -> double& { return c.robot.codo_left; }));
-    s.push_back(real("robot.ir_front", "ir_mount.front_longitudinal",
-                     "front IR sensor ahead of the axle, m",
-                     [](RunConfig& c) -> double& { return c.robot.ir_mount.front_longitudinal; }));
-    s.push_back(real("robot.ir_rear", "ir_mount.rear_longitudinal",
-                     "rear IR sensor ahead of the axle (negative: behind), m",
-                     [](RunConfig& c) -> double& { return c.robot.ir_mount.rear_longitudinal; }));
-    s.push_back(real("robot.ir_lateral", "ir_mount.lateral_offset",
-                     "IR sensors' distance from the centre line (right side), m",
-                     [](RunConfig& c) -> double& { return c.robot.ir_mount.lateral_offset; }));
+    s.push_back(real(
+        "robot.wheel_diameter", "robot.wheel_diameter", "wheel diameter, m",
+        [](auto& c) -> auto& { return c.robot.wheel_diameter; }));
+    s.push_back(real(
+        "robot.wheel_base", "odometry.wheel_base", "b: distance between the wheels, m",
+        [](auto& c) -> auto& { return c.robot.wheel_base; }));
+    s.push_back(real(
+        "robot.counts_per_turn", "robot.counts_per_turn", "encoder counts per wheel turn",
+        [](auto& c) -> auto& { return c.robot.counts_per_turn; }));
+    s.push_back(real(
+        "robot.codo_right", "odometry.codo_right",
+        "Codo1: right wheel counts per metre; 0: from the diameter",
+        [](auto& c) -> auto& { return c.robot.codo_right; }));
+    s.push_back(real(
+        "robot.codo_left", "odometry.codo_left",
+        "Codo2: left wheel counts per metre; 0: from the diameter",
+        [](auto& c) -> auto& { return c.robot.codo_left; }));
+    s.push_back(real(
+        "robot.ir_front", "ir_mount.front_longitudinal", "front IR sensor ahead of the axle, m",
+        [](auto& c) -> auto& { return c.robot.ir_mount.front_longitudinal; }));
+    s.push_back(real(
+        "robot.ir_rear", "ir_mount.rear_longitudinal",
+        "rear IR sensor ahead of the axle (negative: behind), m",
+        [](auto& c) -> auto& { return c.robot.ir_mount.rear_longitudinal; }));
+    s.push_back(real(
+        "robot.ir_lateral", "ir_mount.lateral_offset",
+        "IR sensors' distance from the centre line (right side), m",
+        [](auto& c) -> auto& { return c.robot.ir_mount.lateral_offset; }));
 
     // [ir_curve] — eq. 2, D = a·(C_M/(A + C_R) − b), and its trusted range.
-    s.push_back(real("ir_curve.a", "ir_curve.a", "a: scale of the fit, m per fit unit",
-                     [](RunConfig& c) -> double& { return c.ir_curve.a; }));
-    s.push_back(real("ir_curve.c_m", "ir_curve.c_m", "C_M: constant of multiplication",
-                     [](RunConfig& c) -> double& { return c.ir_curve.c_m; }));
-    s.push_back(real("ir_curve.c_r", "ir_curve.c_r", "C_R: constant of linearisation",
-                     [](RunConfig& c) -> double& { return c.ir_curve.c_r; }));
-    s.push_back(real("ir_curve.b", "ir_curve.b", "b: offset of the fit, fit units",
-                     [](RunConfig& c) -> double& { return c.ir_curve.b; }));
-    s.push_back(real("ir_curve.min_range", "ir_curve.min_range", "closest trusted reading, m",
-                     [](RunConfig& c) -> double& { return c.ir_curve.min_range; }));
-    s.push_back(real("ir_curve.max_range", "ir_curve.max_range", "farthest trusted reading, m",
-                     [](RunConfig& c) -> double& { return c.ir_curve.max_range; }));
-    s.push_back(real("ir_curve.peak_distance", "ir_curve.peak_distance",
-                     "the sensor's output peaks here and folds back below, m",
-                     [](RunConfig& c) -> double& { return c.ir_curve.peak_distance; }));
-    s.push_back(real("ir_curve.contact_adc", "ir_curve.contact_adc",
-                     "A/D value with the target touching the sensor",
-                     [](RunConfig& c) -> double& { return c.ir_curve.contact_adc; }));
+    s.push_back(real(
+        "ir_curve.a", "ir_curve.a", "a: scale of the fit, m per fit unit",
+        [](auto& c) -> auto& { return c.ir_curve.a; }));
+    s.push_back(real(
+        "ir_curve.c_m", "ir_curve.c_m", "C_M: constant of multiplication",
+        [](auto& c) -> auto& { return c.ir_curve.c_m; }));
+    s.push_back(real(
+        "ir_curve.c_r", "ir_curve.c_r", "C_R: constant of linearisation",
+        [](auto& c) -> auto& { return c.ir_curve.c_r; }));
+    s.push_back(real(
+        "ir_curve.b", "ir_curve.b", "b: offset of the fit, fit units",
+        [](auto& c) -> auto& { return c.ir_curve.b; }));
+    s.push_back(real(
+        "ir_curve.min_range", "ir_curve.min_range", "closest trusted reading, m",
+        [](auto& c) -> auto& { return c.ir_curve.min_range; }));
+    s.push_back(real(
+        "ir_curve.max_range", "ir_curve.max_range", "farthest trusted reading, m",
+        [](auto& c) -> auto& { return c.ir_curve.max_range; }));
+    s.push_back(real(
+        "ir_curve.peak_distance", "ir_curve.peak_distance",
+        "the sensor's output peaks here and folds back below, m",
+        [](auto& c) -> auto& { return c.ir_curve.peak_distance; }));
+    s.push_back(real(
+        "ir_curve.contact_adc", "ir_curve.contact_adc",
+        "A/D value with the target touching the sensor",
+        [](auto& c) -> auto& { return c.ir_curve.contact_adc; }));
 
     // [association] — Fig. 4.
-    s.push_back(real("association.segment_margin", "association.segment_margin",
-                     "predicted beams may miss a wall's end by this much, m",
-                     [](RunConfig& c) -> double& { return c.association.segment_margin; }));
-    s.push_back(real("association.range_margin", "association.range_margin",
-                     "predicted beams may exceed the IR range by this much, m",
-                     [](RunConfig& c) -> double& { return c.association.range_margin; }));
-    s.push_back(degrees("association.max_incidence_deg", "association.max_incidence",
-                        "walls seen more obliquely are not used, °",
-                        [](RunConfig& c) -> double& { return c.association.max_incidence; }));
-    s.push_back(degrees("association.max_angle_error_deg", "association.max_angle_error",
-                        "largest accepted ObsAng error, °",
-                        [](RunConfig& c) -> double& { return c.association.max_angle_error; }));
-    s.push_back(real("association.max_distance_error", "association.max_distance_error",
-                     "largest accepted wall distance error, m",
-                     [](RunConfig& c) -> double& { return c.association.max_distance_error; }));
+    s.push_back(real(
+        "association.segment_margin", "association.segment_margin",
+        "predicted beams may miss a wall's end by this much, m",
+        [](auto& c) -> auto& { return c.association.segment_margin; }));
+    s.push_back(real(
+        "association.range_margin", "association.range_margin",
+        "predicted beams may exceed the IR range by this much, m",
+        [](auto& c) -> auto& { return c.association.range_margin; }));
+    s.push_back(degrees(
+        "association.max_incidence_deg", "association.max_incidence",
+        "walls seen more obliquely are not used, °",
+        [](auto& c) -> auto& { return c.association.max_incidence; }));
+    s.push_back(degrees(
+        "association.max_angle_error_deg", "association.max_angle_error",
+        "largest accepted ObsAng error, °",
+        [](auto& c) -> auto& { return c.association.max_angle_error; }));
+    s.push_back(real(
+        "association.max_distance_error", "association.max_distance_error",
+        "largest accepted wall distance error, m",
+        [](auto& c) -> auto& { return c.association.max_distance_error; }));
 
     // [simulator] — the simulated robot's errors, noise, body and motors.
-    const auto physical = [&s](std::string name, std::string help,
-                               std::function<double&(RunConfig&)> access) {
+    const auto physical = [&s](std::string name, std::string help, auto access) {
         s.push_back(
             real("simulator." + name, "simulator." + name, std::move(help), std::move(access)));
     };
-    physical("wheel_diameter_ratio", "E_d = D_right/D_left of the real wheels",
-             [](RunConfig& c) -> double& { return c.physical.wheel_diameter_ratio; });
-    physical("wheel_base_ratio", "E_b = real / nominal wheel base",
-             [](RunConfig& c) -> double& { return c.physical.wheel_base_ratio; });
-    physical("slip_noise", "random wheel slip, σ² = slip_noise²·distance, m^½",
-             [](RunConfig& c) -> double& { return c.physical.slip_noise; });
-    physical("ir_noise", "σ of Gaussian noise on each IR distance, m",
-             [](RunConfig& c) -> double& { return c.physical.ir_noise; });
-    physical("ir_period", "IR update period (value held in between), s",
-             [](RunConfig& c) -> double& { return c.physical.ir_period; });
-    physical("ir_ray_length", "the IR sensors see nothing beyond this, m",
-             [](RunConfig& c) -> double& { return c.physical.ir_ray_length; });
-    physical("motor_time_constant", "first-order motor response, s",
-             [](RunConfig& c) -> double& { return c.physical.motor_time_constant; });
-    physical("max_motor_rpm", "motor no-load speed, rpm",
-             [](RunConfig& c) -> double& { return c.physical.max_motor_rpm; });
-    physical("mass", "robot mass, kg", [](RunConfig& c) -> double& { return c.physical.mass; });
-    physical("traction", "tyre friction coefficient μ",
-             [](RunConfig& c) -> double& { return c.physical.traction; });
-    physical("wheel_load", "share of the weight on the driven wheels",
-             [](RunConfig& c) -> double& { return c.physical.wheel_load; });
-    physical("chassis_front", "chassis extent ahead of the axle, m",
-             [](RunConfig& c) -> double& { return c.physical.chassis_front; });
-    physical("chassis_rear", "chassis extent behind the axle, m",
-             [](RunConfig& c) -> double& { return c.physical.chassis_rear; });
-    physical("chassis_half_width", "half the chassis width with wheels, m",
-             [](RunConfig& c) -> double& { return c.physical.chassis_half_width; });
-    physical("physics_rate", "physics steps per second, Hz",
-             [](RunConfig& c) -> double& { return c.simulator.physics_rate; });
-    physical("control_period", "control period of the loop, s",
-             [](RunConfig& c) -> double& { return c.simulator.control_period; });
+    physical(
+        "wheel_diameter_ratio", "E_d = D_right/D_left of the real wheels",
+        [](auto& c) -> auto& { return c.physical.wheel_diameter_ratio; });
+    physical(
+        "wheel_base_ratio", "E_b = real / nominal wheel base",
+        [](auto& c) -> auto& { return c.physical.wheel_base_ratio; });
+    physical(
+        "slip_noise", "random wheel slip, σ² = slip_noise²·distance, m^½",
+        [](auto& c) -> auto& { return c.physical.slip_noise; });
+    physical(
+        "ir_noise", "σ of Gaussian noise on each IR distance, m",
+        [](auto& c) -> auto& { return c.physical.ir_noise; });
+    physical(
+        "ir_period", "IR update period (value held in between), s",
+        [](auto& c) -> auto& { return c.physical.ir_period; });
+    physical(
+        "ir_ray_length", "the IR sensors see nothing beyond this, m",
+        [](auto& c) -> auto& { return c.physical.ir_ray_length; });
+    physical(
+        "motor_time_constant", "first-order motor response, s",
+        [](auto& c) -> auto& { return c.physical.motor_time_constant; });
+    physical(
+        "max_motor_rpm", "motor no-load speed, rpm",
+        [](auto& c) -> auto& { return c.physical.max_motor_rpm; });
+    physical(
+        "mass", "robot mass, kg", [](auto& c) -> auto& { return c.physical.mass; });
+    physical(
+        "traction", "tyre friction coefficient μ",
+        [](auto& c) -> auto& { return c.physical.traction; });
+    physical(
+        "wheel_load", "share of the weight on the driven wheels",
+        [](auto& c) -> auto& { return c.physical.wheel_load; });
+    physical(
+        "chassis_front", "chassis extent ahead of the axle, m",
+        [](auto& c) -> auto& { return c.physical.chassis_front; });
+    physical(
+        "chassis_rear", "chassis extent behind the axle, m",
+        [](auto& c) -> auto& { return c.physical.chassis_rear; });
+    physical(
+        "chassis_half_width", "half the chassis width with wheels, m",
+        [](auto& c) -> auto& { return c.physical.chassis_half_width; });
+    physical(
+        "physics_rate", "physics steps per second, Hz",
+        [](auto& c) -> auto& { return c.simulator.physics_rate; });
+    physical(
+        "control_period", "control period of the loop, s",
+        [](auto& c) -> auto& { return c.simulator.control_period; });
     s.push_back(pose_part("simulator.start_x", "simulator.start_x",
                           "where the robot really starts, m (default: world start)",
                           &RunConfig::true_start, &PoseOverride::x));

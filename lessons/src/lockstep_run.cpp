@@ -1,6 +1,7 @@
 #include "legofeup/lessons/lockstep_run.hpp"
 
 #include <chrono>
+#include <utility>
 
 #include "legofeup/core/legofeup_loop.hpp"
 #include "legofeup/sim/lockstep_link.hpp"
@@ -23,8 +24,9 @@ double progress_of(const ResolvedRun& run, const LoopSnapshot& snapshot) {
 RunResult run_lockstep(const ResolvedRun& run, RunObserver* observer,
                        const ProgressCallback& progress) {
     const auto started = std::chrono::steady_clock::now();
-    sim::Simulator simulator(run.world, run.robot, run.config.simulator, run.config.seed);
-    simulator.reset(run.true_start, run.config.seed);
+    sim::WorldSpec world = run.world;
+    world.start = run.true_start;  // the simulator puts the robot at its world's start
+    sim::Simulator simulator(std::move(world), run.robot, run.config.simulator, run.config.seed);
     sim::LockstepLink link(simulator);
     LegoFeupLoop loop(run.loop);
     RunMetricsAccumulator metrics;

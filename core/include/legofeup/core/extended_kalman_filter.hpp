@@ -105,7 +105,7 @@ class ExtendedKalmanFilter : public FilterBase<StateSpace> {
         MeasurementMatrix S = H * P * H.transpose() + R;       // eq. 16
         S = (0.5 * (S + S.transpose())).eval();
         report.innovation_covariance = S;
-        if (!report.innovation.allFinite() || !S.allFinite() || !R.allFinite()) {
+        if (!report.innovation.allFinite() || !S.allFinite()) {  // S carries any NaN/Inf of R
             report.status = StepStatus::RejectedNonFinite;
             return report;
         }
