@@ -5,8 +5,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
+#include "legofeup/comms/link_error.hpp"
 #include "legofeup/core/angles.hpp"
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/experiments.hpp"
@@ -16,6 +19,7 @@
 #include "legofeup/lessons/trace_csv.hpp"
 #include "progress_bar.hpp"
 #include "run_plots.hpp"
+#include "udp_run.hpp"
 
 namespace legofeup::cli {
 namespace {
@@ -28,7 +32,7 @@ using lessons::RunConfig;
 class Observers final : public lessons::RunObserver {
   public:
     void add(lessons::RunObserver& observer) { observers_.push_back(&observer); }
-    void on_step(const LoopSnapshot& snapshot, const sim::GroundTruth& truth) override {
+    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
         for (lessons::RunObserver* observer : observers_) {
             observer->on_step(snapshot, truth);
         }
@@ -94,6 +98,41 @@ class AtomicFile {
     std::ofstream out_;
 };
 
+/// The link a run uses: the deterministic in-process simulator, or a server over UDP.
+struct LinkChoice {
+    std::optional<UdpTarget> udp;  ///< unset: lockstep
+
+    std::string describe() const { return udp ? "udp://" + udp->robot.to_string() : "lockstep"; }
+};
+
+LinkChoice choose_link(const RunOptions& options) {
+    if (options.link == "lockstep") {
+        return {};
+    }
+    return {parse_udp_target(options.link, options.truth_port, options.control_port)};
+}
+
+nlohmann::json link_to_json(const LinkChoice& link, const UdpRunReport& report) {
+    if (!link.udp) {
+        return {{"kind", "lockstep"}};
+    }
+    const comms::ServerCounters& c = report.server.counters;
+    return {
+        {"kind", "udp"},
+        {"robot", link.udp->robot.to_string()},
+        {"truth", link.udp->truth.to_string()},
+        {"control", link.udp->control.to_string()},
+        {"frames_received", report.frames_received},
+        {"frames_duplicate", report.frames_duplicate},
+        {"frames_late", report.frames_late},
+        {"frame_timeouts", report.frames_timed_out},
+        {"server_time_scale", report.server.time_scale},
+        {"server_commands_accepted", c.commands_accepted},
+        {"server_commands_missing", c.commands_missing},
+        {"server_overruns", c.overruns},
+    };
+}
+
 void print_summary(const lessons::ResolvedRun& run, const lessons::RunResult& result,
                    const std::string& title) {
     const RunMetrics& m = result.metrics;
@@ -117,6 +156,11 @@ void print_summary(const lessons::ResolvedRun& run, const lessons::RunResult& re
     std::printf("  mean NEES %.2f; %.0f%% of steps inside the 95%% bounds [%.3f, %.3f]\n",
                 m.mean_nees, 100.0 * m.nees_inside_fraction, m.nees_bounds.lower,
                 m.nees_bounds.upper);
+    if (result.frames_missing > 0) {
+        std::printf("  %llu control period%s ran without a frame (predict only)\n",
+                    static_cast<unsigned long long>(result.frames_missing),
+                    result.frames_missing == 1 ? "" : "s");
+    }
 }
 
 }  // namespace
@@ -124,8 +168,10 @@ void print_summary(const lessons::ResolvedRun& run, const lessons::RunResult& re
 int run_command(const RunOptions& options) {
     std::string title;
     lessons::ResolvedRun run;
+    LinkChoice link;
     try {
         run = lessons::resolve(build_config(options, title));
+        link = choose_link(options);
     } catch (const InputError& error) {
         report_problems(error);
         return kExitBadInput;
@@ -151,18 +197,25 @@ int run_command(const RunOptions& options) {
             observers.add(recording);
         }
         ProgressBar progress("run " + (options.experiment.empty() ? "" : options.experiment));
-        const lessons::RunResult result =
-            lessons::run_lockstep(run, &observers, [&](double fraction, double simulated) {
-                char detail[64];
-                std::snprintf(detail, sizeof detail, "%.0f s simulated", simulated);
-                progress.update(fraction, detail);
-            });
+        const auto show_progress = [&](double fraction, double simulated) {
+            char detail[64];
+            std::snprintf(detail, sizeof detail, "%.0f s simulated", simulated);
+            progress.update(fraction, detail);
+        };
+        UdpRunReport report;
+        if (link.udp) {
+            report = run_over_udp(run, *link.udp, &observers, show_progress);
+        } else {
+            report.result = lessons::run_lockstep(run, &observers, show_progress);
+        }
+        const lessons::RunResult& result = report.result;
         progress.finish();
         trace.commit();
 
         AtomicFile summary(out / "summary.json");
-        summary.stream() << lessons::run_summary(run, result, options.experiment, title).dump(2)
-                         << '\n';
+        nlohmann::json summary_json = lessons::run_summary(run, result, options.experiment, title);
+        summary_json["link"] = link_to_json(link, report);
+        summary.stream() << summary_json.dump(2) << '\n';
         summary.commit();
         if (options.plots) {
             write_run_plots(recording, run.world, out, "LegoFeup " + title);
@@ -174,6 +227,13 @@ int run_command(const RunOptions& options) {
                                         "wheel_speeds (.png and .svg)"
                                       : "");
         }
+    } catch (const comms::LinkError& failure) {
+        std::cerr << "error: " << failure.what() << '\n';
+        return kExitLinkFailed;
+    } catch (const lessons::LinkSilent& failure) {
+        std::cerr << "error: " << failure.what() << " from " << link.describe()
+                  << " (did legofeup-sim stop?); nothing was written\n";
+        return kExitLinkFailed;
     } catch (const std::exception& failure) {
         std::cerr << "error: " << failure.what() << '\n';
         return kExitOutputFailed;

@@ -1,6 +1,7 @@
 #pragma once
 // The subcommands of legofeup-cli. Each returns the process exit code:
-// 0 success, 1 invalid input (configuration, files, options), 2 output could not be written.
+// 0 success, 1 invalid input (configuration, files, options), 2 output could not be written,
+// 3 the link failed (no simulator answering, robot held by another client, frames stopped).
 
 #include <cstdint>
 #include <optional>
@@ -11,6 +12,7 @@ namespace legofeup::cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitBadInput = 1;
 inline constexpr int kExitOutputFailed = 2;
+inline constexpr int kExitLinkFailed = 3;
 
 struct RunOptions {
     std::string experiment;  ///< "a" … "f", or empty for the defaults
@@ -20,6 +22,10 @@ struct RunOptions {
     std::string out_directory;
     bool plots = true;
     bool quiet = false;
+    /// "lockstep" (the in-process simulator) or "udp://a.b.c.d:port" (a legofeup-sim).
+    std::string link = "lockstep";
+    int truth_port = 0;    ///< 0: the robot port + 1
+    int control_port = 0;  ///< 0: the robot port + 2
 };
 
 int run_command(const RunOptions& options);

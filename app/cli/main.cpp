@@ -32,6 +32,15 @@ int main(int argc, char** argv) {
         ->required();
     run->add_flag("!--no-plots", options.plots, "Skip the PNG and SVG plots");
     run->add_flag("--quiet,-q", options.quiet, "Print nothing on success");
+    run->add_option("--link", options.link,
+                    "lockstep (the in-process simulator, deterministic) or udp://HOST:PORT (a "
+                    "running legofeup-sim, docs/protocol.md)");
+    run->add_option("--truth-port", options.truth_port,
+                    "The simulator's ground-truth port (default: link port + 1)")
+        ->check(CLI::Range(1, 65535));
+    run->add_option("--control-port", options.control_port,
+                    "The simulator's control port (default: link port + 2)")
+        ->check(CLI::Range(1, 65535));
 
     app.add_subcommand("experiments", "List the guided experiments a … f");
 

@@ -156,7 +156,7 @@ void two_series(const RunRecording& rec, const std::string& base, const std::str
 
 }  // namespace
 
-void RunRecording::on_step(const LoopSnapshot& snapshot, const sim::GroundTruth& truth) {
+void RunRecording::on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) {
     Step step;
     step.time = snapshot.time;
     step.truth = truth.pose;

@@ -24,7 +24,7 @@ class RunRecording final : public lessons::RunObserver {
         WheelSpeeds wheels;
     };
 
-    void on_step(const LoopSnapshot& snapshot, const sim::GroundTruth& truth) override;
+    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override;
     const std::vector<Step>& steps() const { return steps_; }
 
   private:

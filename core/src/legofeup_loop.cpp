@@ -123,10 +123,39 @@ const LoopSnapshot& LegoFeupLoop::step(const SensorFrame& frame) {
     s.step = ++steps_;
     s.time = frame.time;
     s.sequence = frame.sequence;
+    s.frame_missing = false;
 
     predict_from_encoders(frame);
     observe_and_update(frame);
+    control_and_publish();
+    return s;
+}
 
+const LoopSnapshot& LegoFeupLoop::step_without_frame(double time) {
+    LoopSnapshot& s = snapshot_;
+    s.step = ++steps_;
+    s.time = time;
+    s.frame_missing = true;
+
+    // Eq. 11–13 with d = Δθ = 0: X̂ is unchanged and P ← P + ∇f_q Q ∇f_qᵀ. A period passed
+    // in which the robot moved in some unknown way; its odometry arrives with the next frame.
+    s.increment = {};
+    s.odometry_glitch = false;
+    s.predict_status = have_counts_
+                           ? filter_.predict(OdometryProcessModel(s.increment, process_noise_))
+                           : StepStatus::NotAttempted;
+    for (IrSample& sample : s.ir) {
+        sample = IrSample{0, IrDistance{0.0, IrStatus::Unavailable}};
+    }
+    s.observation_available = false;
+    s.association = AssociationResult{};
+    s.update = WallUpdateReport{};
+    control_and_publish();
+    return s;
+}
+
+void LegoFeupLoop::control_and_publish() {
+    LoopSnapshot& s = snapshot_;
     // Control module on the updated estimate; eq. 1 turns (V, W) into wheel speeds.
     const ControlOutput control = run_controller(controller_, to_pose(filter_.state()),
                                                  config_.motion, config_.gains, s.controller);
@@ -137,7 +166,6 @@ const LoopSnapshot& LegoFeupLoop::step(const SensorFrame& frame) {
     s.estimate = filter_.state();
     s.covariance = filter_.covariance();
     s.odometry_pose = odometry_pose_;
-    return s;
 }
 
 }  // namespace legofeup

@@ -74,6 +74,8 @@ nlohmann::json run_summary(const ResolvedRun& run, const RunResult& result,
     metrics["real_time_factor"] =
         result.wall_seconds > 0.0 ? result.metrics.duration / result.wall_seconds : 0.0;
     metrics["routine_finished"] = result.routine_finished;
+    metrics["frames_missing"] = result.frames_missing;
+    metrics["steps_without_truth"] = result.steps_without_truth;
     return {
         {"experiment", experiment},
         {"title", title},

@@ -26,14 +26,14 @@ void number(std::ostream& out, double value) {
 const char* trace_csv_header() {
     return "t,x_true,y_true,th_true,x_est,y_est,th_est,pxx,pxy,pxt,pyy,pyt,ptt,"
            "x_odo,y_odo,th_odo,ds1,ds2,v1,v2,wall,nis,nees,"
-           "adc1,adc2,association,update,touching_wall";
+           "adc1,adc2,association,update,touching_wall,frame_missing";
 }
 
 TraceCsvWriter::TraceCsvWriter(std::ostream& out, const LoopConfig& loop) : out_(out), loop_(loop) {
     out_ << trace_csv_header() << '\n';
 }
 
-void TraceCsvWriter::on_step(const LoopSnapshot& s, const sim::GroundTruth& truth) {
+void TraceCsvWriter::on_step(const LoopSnapshot& s, const GroundTruth& truth) {
     number(out_, s.time);
     number(out_, truth.pose.x);
     number(out_, truth.pose.y);
@@ -62,7 +62,8 @@ void TraceCsvWriter::on_step(const LoopSnapshot& s, const sim::GroundTruth& trut
     number(out_, s.update.status == StepStatus::Applied ? s.update.nis : kNone);
     number(out_, normalized_estimation_error(to_state(truth.pose), s.estimate, s.covariance));
     out_ << s.ir[0].adc << ',' << s.ir[1].adc << ',' << to_string(s.association.outcome) << ','
-         << to_string(s.update.status) << ',' << (truth.touching_wall ? 1 : 0) << '\n';
+         << to_string(s.update.status) << ',' << (truth.touching_wall ? 1 : 0) << ','
+         << (s.frame_missing ? 1 : 0) << '\n';
 }
 
 }  // namespace legofeup::lessons

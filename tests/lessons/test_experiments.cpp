@@ -65,7 +65,7 @@ TEST(Experiments, PresetsSetWhatEachStepIsAbout) {
 // step (the trace need not: a shear can shrink one variance while another grows).
 class CovarianceGrowth final : public RunObserver {
   public:
-    void on_step(const LoopSnapshot& s, const sim::GroundTruth&) override {
+    void on_step(const LoopSnapshot& s, const GroundTruth&) override {
         const double det = s.covariance.determinant();
         shrank_ = shrank_ || det < previous_det_ || s.covariance(kTheta, kTheta) < previous_var_;
         previous_det_ = det;

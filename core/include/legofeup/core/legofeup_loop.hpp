@@ -28,6 +28,13 @@ class LegoFeupLoop {
     /// Runs one control period. The returned snapshot stays valid until the next call.
     const LoopSnapshot& step(const SensorFrame& frame);
 
+    /// Runs a control period for which no frame arrived (a lossy link): predict only, with
+    /// a zero odometry increment but the full process noise Q, so P grows as the paper's
+    /// model says it must; no observation; the routine runs on the prediction. The encoder
+    /// reference is kept, so the next frame's counts bring the missed motion in (the counts
+    /// are cumulative). `time` is when the frame was due. Flags snapshot().frame_missing.
+    const LoopSnapshot& step_without_frame(double time);
+
     /// Back to the initial belief with the configured routine restarted; the next frame only
     /// sets the encoder reference.
     void reset();
@@ -51,6 +58,7 @@ class LegoFeupLoop {
     void apply_tuning();
     void predict_from_encoders(const SensorFrame& frame);
     void observe_and_update(const SensorFrame& frame);
+    void control_and_publish();
 
     LoopConfig config_;
     ExtendedKalmanFilter<PoseStateSpace> filter_;

@@ -28,6 +28,9 @@ struct LoopSnapshot {
     std::uint64_t step = 0;      ///< frames processed since the last reset (1 for the first)
     double time = 0.0;           ///< the frame's time stamp, s
     std::uint32_t sequence = 0;  ///< the frame's sequence number
+    /// No frame came this period (lost or late on a real link): the loop only predicted,
+    /// with no odometry increment, and the controller ran on the prediction.
+    bool frame_missing = false;
 
     // Estimation module.
     StateVector estimate = StateVector::Zero();            ///< X̂ after this step

@@ -16,7 +16,7 @@ class TraceCsvWriter final : public RunObserver {
   public:
     /// Writes the header at once. `loop` names the walls.
     TraceCsvWriter(std::ostream& out, const LoopConfig& loop);
-    void on_step(const LoopSnapshot& snapshot, const sim::GroundTruth& truth) override;
+    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override;
 
   private:
     std::ostream& out_;

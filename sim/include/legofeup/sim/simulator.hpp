@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <memory>
 
+#include "legofeup/core/ground_truth.hpp"
 #include "legofeup/core/motion.hpp"
 #include "legofeup/core/sensor_frame.hpp"
-#include "legofeup/sim/ground_truth.hpp"
 #include "legofeup/sim/robot_spec.hpp"
 #include "legofeup/sim/world.hpp"
 

@@ -1,13 +1,14 @@
 #pragma once
 // What really happened, reported on its own channel for displays and metrics. The filter
-// never sees it: links carry SensorFrames only.
+// never sees it: links carry SensorFrames only. The simulator fills it in; over UDP it
+// travels on its own stream (docs/protocol.md).
 
 #include <array>
 
 #include "legofeup/core/motion.hpp"
 #include "legofeup/core/state.hpp"
 
-namespace legofeup::sim {
+namespace legofeup {
 
 struct GroundTruth {
     double time = 0.0;         ///< simulated time, s
@@ -21,4 +22,4 @@ struct GroundTruth {
     std::array<double, 2> ir_distances{};
 };
 
-}  // namespace legofeup::sim
+}  // namespace legofeup

@@ -1,0 +1,28 @@
+#pragma once
+// An IPv4 address and UDP port, as plain values (no socket headers leak out of comms).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace legofeup::comms {
+
+struct Endpoint {
+    std::uint32_t address = 0x7F000001;  ///< IPv4 in host order (127.0.0.1 = 0x7F000001)
+    std::uint16_t port = 0;
+
+    bool is_loopback() const { return (address >> 24) == 127; }
+    std::string to_string() const;  ///< "127.0.0.1:5600"
+
+    friend bool operator==(const Endpoint&, const Endpoint&) = default;
+};
+
+/// Parses "a.b.c.d:port" (port 0 … 65535) or, for the port alone, "a.b.c.d" with
+/// `default_port`. Returns nullopt for anything else; names are not resolved.
+std::optional<Endpoint> parse_endpoint(std::string_view text, std::uint16_t default_port);
+
+/// Parses "udp://a.b.c.d:port" (the port defaults to the robot port 5600).
+std::optional<Endpoint> parse_udp_url(std::string_view url);
+
+}  // namespace legofeup::comms

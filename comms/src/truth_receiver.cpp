@@ -1,0 +1,71 @@
+#include "legofeup/comms/truth_receiver.hpp"
+
+namespace legofeup::comms {
+namespace {
+
+constexpr std::size_t kKeep = 64;
+/// Subscriptions lapse after 5 s; renewing every second survives a few lost renewals.
+constexpr std::chrono::seconds kRenewEvery{1};
+
+}  // namespace
+
+TruthReceiver::TruthReceiver(const Endpoint& server)
+    : server_(server), socket_(Endpoint{server.is_loopback() ? server.address : 0, 0}) {
+    subscribe();
+}
+
+TruthReceiver::~TruthReceiver() {
+    socket_.send_to(encode(BarePacket{PacketType::TruthUnsubscribe, next_sequence_++, 0.0}),
+                    server_);
+}
+
+void TruthReceiver::subscribe() {
+    socket_.send_to(encode(BarePacket{PacketType::TruthSubscribe, next_sequence_++, 0.0}), server_);
+    renew_at_ = std::chrono::steady_clock::now() + kRenewEvery;
+}
+
+void TruthReceiver::poll(std::chrono::microseconds timeout) {
+    if (std::chrono::steady_clock::now() >= renew_at_) {
+        subscribe();
+    }
+    for (auto datagram = socket_.receive(timeout); datagram;
+         datagram = socket_.receive(std::chrono::microseconds(0))) {
+        TruthPacket packet;
+        if (datagram->from != server_ || decode(datagram->bytes, packet) != DecodeError::None) {
+            ++malformed_;
+            continue;
+        }
+        if (window_.classify(packet.sequence) != Arrival::New) {
+            continue;
+        }
+        recent_.push_back(packet.truth);
+        if (recent_.size() > kKeep) {
+            recent_.pop_front();
+        }
+    }
+}
+
+std::optional<GroundTruth> TruthReceiver::at(double time) {
+    poll();
+    const std::uint64_t wanted = to_microseconds(time);
+    std::optional<GroundTruth> before;
+    for (const GroundTruth& truth : recent_) {
+        const std::uint64_t t = to_microseconds(truth.time);
+        if (t == wanted) {
+            return truth;
+        }
+        if (t < wanted) {
+            before = truth;
+        }
+    }
+    return before;
+}
+
+std::optional<GroundTruth> TruthReceiver::latest() const {
+    if (recent_.empty()) {
+        return std::nullopt;
+    }
+    return recent_.back();
+}
+
+}  // namespace legofeup::comms

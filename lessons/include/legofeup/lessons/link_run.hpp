@@ -1,0 +1,61 @@
+#pragma once
+// Runs the loop against any link — the in-process simulator, a simulator server over UDP,
+// later the NXT — until the routine is finished or the time limit. The loop sees frames
+// only; ground truth comes from a separate source, for metrics and plots.
+//
+// Over a real link frames can be lost, duplicated or late. The link hands over each frame
+// once, in order; for every control period without a frame this runner makes the loop
+// predict without one (LegoFeupLoop::step_without_frame) and flags it in the snapshot.
+
+#include <functional>
+#include <optional>
+#include <stdexcept>
+
+#include "legofeup/core/ground_truth.hpp"
+#include "legofeup/core/robot_link.hpp"
+#include "legofeup/core/run_metrics.hpp"
+#include "legofeup/lessons/run_config.hpp"
+
+namespace legofeup::lessons {
+
+/// Sees every step of a run: what the loop computed and what really happened.
+class RunObserver {
+  public:
+    virtual ~RunObserver() = default;
+    virtual void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) = 0;
+};
+
+/// Where the truth comes from: the simulator itself, or its truth stream over UDP.
+class TruthSource {
+  public:
+    virtual ~TruthSource() = default;
+    /// The truth at `time` (or the newest before it); nullopt if none is known.
+    virtual std::optional<GroundTruth> truth_at(double time) = 0;
+};
+
+struct RunResult {
+    RunMetrics metrics;
+    bool routine_finished = false;          ///< false: stopped at the time limit
+    double wall_seconds = 0.0;              ///< how long the run took on this machine
+    std::uint64_t frames_missing = 0;       ///< control periods run without a frame
+    std::uint64_t steps_without_truth = 0;  ///< steps whose truth never arrived (not in metrics)
+};
+
+/// Called now and then with how far the run has got (0 … 1: laps and sides driven for a
+/// path, otherwise simulated time over the time limit) and the simulated time in seconds.
+using ProgressCallback = std::function<void(double fraction, double simulated)>;
+
+/// Thrown when the link delivers no frame for kMaxSilentPeriods control periods in a row.
+class LinkSilent : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+inline constexpr int kMaxSilentPeriods = 40;
+
+/// Runs the loop of `run` over `link`. The first frame the link delivers starts the run (it
+/// only sets the encoder reference); the link's control period must be the run's
+/// (run.config.simulator.control_period). Throws LinkSilent if the frames stop.
+RunResult run_with_link(const ResolvedRun& run, RobotLink& link, TruthSource& truth,
+                        RunObserver* observer = nullptr, const ProgressCallback& progress = {});
+
+}  // namespace legofeup::lessons

@@ -1,0 +1,30 @@
+#include "truth_subscribers.hpp"
+
+#include <algorithm>
+
+namespace legofeup::simserver {
+
+bool TruthSubscribers::subscribe(const comms::Endpoint& from,
+                                 std::chrono::steady_clock::time_point now) {
+    const auto it = std::find_if(subscribers_.begin(), subscribers_.end(),
+                                 [&](const Subscriber& s) { return s.address == from; });
+    if (it != subscribers_.end()) {
+        it->until = now + kLease;
+        return true;
+    }
+    if (subscribers_.size() >= kMax) {
+        return false;
+    }
+    subscribers_.push_back({from, now + kLease});
+    return true;
+}
+
+void TruthSubscribers::unsubscribe(const comms::Endpoint& from) {
+    std::erase_if(subscribers_, [&](const Subscriber& s) { return s.address == from; });
+}
+
+void TruthSubscribers::expire(std::chrono::steady_clock::time_point now) {
+    std::erase_if(subscribers_, [&](const Subscriber& s) { return s.until <= now; });
+}
+
+}  // namespace legofeup::simserver
