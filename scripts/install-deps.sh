@@ -11,6 +11,8 @@ packages=(
     libcli11-dev libcairo2-dev fonts-dejavu-core  # legofeup-cli: options, PNG/SVG plots
     libgtest-dev libgmock-dev           # tests
     libbenchmark-dev                    # bench/
+    clang libclang-rt-14-dev            # fuzz/: libFuzzer targets of the protocol decoders
+    python3                             # examples/python and its test
 )
 
 missing=()

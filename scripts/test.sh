@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is needed, builds, and runs every test: the warnings-as-errors `dev` build
-# and the AddressSanitizer + UndefinedBehaviorSanitizer `asan` build.
+# Installs what is needed, builds, and runs every test: the warnings-as-errors `dev` build,
+# the AddressSanitizer + UndefinedBehaviorSanitizer `asan` build, and a bounded run of the
+# protocol decoders' fuzzers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -12,4 +13,6 @@ for preset in dev asan; do
     cmake --build --preset "$preset"
     ctest --preset "$preset"
 done
-echo "All tests passed (dev and asan)."
+echo "== fuzz: the protocol decoders, 15 s each"
+scripts/fuzz.sh 15
+echo "All tests passed (dev, asan and fuzz)."

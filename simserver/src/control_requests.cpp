@@ -2,6 +2,7 @@
 // server's thread between two periods, and answered with the status after it.
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "legofeup/core/config_issue.hpp"
@@ -24,7 +25,10 @@ std::string join_issues(const std::vector<ConfigIssue>& issues) {
 }  // namespace
 
 std::string SimServer::State::check_pose_in_arena(const Pose2& pose) const {
-    // The arena's extent: the bounding box of its walls. The pose must lie strictly inside.
+    // The arena's extent: the bounding box of its walls, less the chassis' reach from the
+    // axle (the circle around it, whatever the heading), so the robot lands clear of them.
+    const double reach =
+        std::hypot(std::max(robot.chassis_front, robot.chassis_rear), robot.chassis_half_width);
     double low_x = std::numeric_limits<double>::infinity();
     double low_y = low_x;
     double high_x = -low_x;
@@ -37,13 +41,17 @@ std::string SimServer::State::check_pose_in_arena(const Pose2& pose) const {
             high_y = std::max(high_y, point.y());
         }
     }
-    if (pose.x > low_x && pose.x < high_x && pose.y > low_y && pose.y < high_y) {
+    low_x += reach;
+    low_y += reach;
+    high_x -= reach;
+    high_y -= reach;
+    if (pose.x >= low_x && pose.x <= high_x && pose.y >= low_y && pose.y <= high_y) {
         return {};
     }
     return "pose (" + format_config_number(pose.x) + ", " + format_config_number(pose.y)
-           + ") m is outside the arena (x " + format_config_number(low_x) + " … "
-           + format_config_number(high_x) + ", y " + format_config_number(low_y) + " … "
-           + format_config_number(high_y) + ")";
+           + ") m is outside the arena, or the chassis would overlap a wall (x "
+           + format_config_number(low_x) + " … " + format_config_number(high_x) + ", y "
+           + format_config_number(low_y) + " … " + format_config_number(high_y) + ")";
 }
 
 comms::ControlReplyPacket SimServer::State::carry_out(const comms::ControlRequestPacket& request,

@@ -176,6 +176,7 @@ void SimServer::State::on_robot_datagram(const comms::Datagram& datagram, Clock:
     if (header.type == PacketType::Disconnect) {
         session.disconnect(datagram.from);
         simulator.set_wheel_command(WheelSpeeds{});
+        session.motors_stopped();
         return;
     }
     comms::CommandPacket command;

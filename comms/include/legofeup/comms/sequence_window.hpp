@@ -32,6 +32,7 @@ class SequenceWindow {
 
   private:
     bool started_ = false;
+    std::uint32_t first_ = 0;  ///< the first number since start or restart
     std::uint32_t newest_ = 0;
     std::uint64_t seen_ = 0;  ///< bit i: newest_ − i was received
     SequenceCounts counts_;

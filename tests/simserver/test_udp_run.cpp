@@ -1,0 +1,102 @@
+// An experiment over UDP gives what the in-process lockstep run gives: identically in
+// lockstep mode (the server waits for each command), and statistically in scaled real time.
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "legofeup/comms/control_client.hpp"
+#include "legofeup/comms/truth_receiver.hpp"
+#include "legofeup/comms/udp_link.hpp"
+#include "legofeup/lessons/experiments.hpp"
+#include "legofeup/lessons/lockstep_run.hpp"
+#include "support/test_server.hpp"
+
+namespace legofeup {
+namespace {
+
+using namespace std::chrono_literals;
+using testing::loopback;
+
+class Recorder final : public lessons::RunObserver {
+  public:
+    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
+        snapshots.push_back(snapshot);
+        truths.push_back(truth);
+    }
+    std::vector<LoopSnapshot> snapshots;
+    std::vector<GroundTruth> truths;
+};
+
+class ReceiverTruth final : public lessons::TruthSource {
+  public:
+    explicit ReceiverTruth(comms::TruthReceiver& receiver) : receiver_(receiver) {}
+    std::optional<GroundTruth> truth_at(double time) override { return receiver_.at(time); }
+
+  private:
+    comms::TruthReceiver& receiver_;
+};
+
+lessons::ResolvedRun one_lap_of_f() {
+    lessons::RunConfig config = lessons::find_experiment("f")->config;
+    config.laps = 1;
+    return lessons::resolve(config);
+}
+
+lessons::RunResult run_over_udp(const lessons::ResolvedRun& run, double time_scale,
+                                Recorder& recorder) {
+    const auto server = testing::start_test_server(time_scale);
+    comms::ControlClient control(loopback(server->ports().control));
+    comms::TruthReceiver truth(loopback(server->ports().truth));
+    control.set_noise({run.robot.wheel_diameter_ratio, run.robot.wheel_base_ratio,
+                       run.robot.slip_noise, run.robot.ir_noise});
+    comms::UdpLinkOptions options;
+    options.server = loopback(server->ports().robot);
+    comms::UdpSimulatorLink link(options);
+    link.connect();
+    control.reset(run.config.seed, run.true_start);
+    EXPECT_TRUE(link.await_reset(1s));
+    ReceiverTruth source(truth);
+    return lessons::run_with_link(run, link, source, &recorder);
+}
+
+TEST(UdpRun, LockstepModeReproducesTheInProcessRunExactly) {
+    const lessons::ResolvedRun run = one_lap_of_f();
+    Recorder in_process;
+    const lessons::RunResult expected = lessons::run_lockstep(run, &in_process);
+    Recorder over_udp;
+    const lessons::RunResult result = run_over_udp(run, 0.0, over_udp);
+
+    ASSERT_EQ(over_udp.snapshots.size(), in_process.snapshots.size());
+    EXPECT_EQ(result.frames_missing, 0U);
+    EXPECT_EQ(result.steps_without_truth, 0U);
+    for (std::size_t i = 0; i < in_process.snapshots.size(); ++i) {
+        const LoopSnapshot& a = over_udp.snapshots[i];
+        const LoopSnapshot& b = in_process.snapshots[i];
+        ASSERT_NEAR(a.time, b.time, 1e-9) << "step " << i;  // µs on the wire
+        ASSERT_EQ(a.estimate, b.estimate) << "step " << i;
+        ASSERT_EQ(a.covariance, b.covariance) << "step " << i;
+        ASSERT_EQ(over_udp.truths[i].pose.x, in_process.truths[i].pose.x) << "step " << i;
+    }
+    EXPECT_EQ(result.metrics.rms_position_error, expected.metrics.rms_position_error);
+}
+
+TEST(UdpRun, ScaledRealTimeGivesTheSameQualityOfLocalisation) {
+    const lessons::ResolvedRun run = one_lap_of_f();
+    Recorder in_process;
+    const lessons::RunResult expected = lessons::run_lockstep(run, &in_process);
+    Recorder over_udp;
+    const lessons::RunResult result = run_over_udp(run, 25.0, over_udp);  // 1 s per 25 s
+
+    EXPECT_TRUE(result.routine_finished);
+    // Not bit-identical (the command reaches the robot some µs into the period, and the
+    // machine's load decides when), but the same filter on the same robot.
+    EXPECT_LT(result.metrics.rms_position_error, 2.0 * expected.metrics.rms_position_error);
+    EXPECT_LT(result.metrics.final_position_error, 0.1);
+    EXPECT_GT(result.metrics.updates_applied, expected.metrics.updates_applied / 2);
+    EXPECT_NEAR(result.metrics.duration, expected.metrics.duration,
+                0.1 * expected.metrics.duration);
+}
+
+}  // namespace
+}  // namespace legofeup
