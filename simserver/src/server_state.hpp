@@ -53,7 +53,7 @@ struct SimServer::State {
 
     std::uint64_t steps = 0;
     bool paused = false;
-    bool reset_flag = true;  ///< the next frame is the first since a (re)start
+    bool reset_flag = false;  ///< the next frame is the first since a Reset request
     std::uint32_t frame_sequence = 0;
     std::uint32_t truth_sequence = 0;
     std::uint32_t reply_sequence = 0;

@@ -1,0 +1,150 @@
+// legofeup-sim and `legofeup-cli run --link udp://…` as a user runs them: a run against the
+// standalone server gives the lockstep run's results; bad input gets a precise message.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "legofeup/comms/udp_socket.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+struct Result {
+    int exit_code;
+    std::string out;
+    std::string err;
+};
+
+std::string read_file(const fs::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+class SimCli : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::path(LEGOFEUP_TEST_TMP) / info->name();
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+
+    void TearDown() override {
+        if (fs::exists(dir_ / "sim.pid")) {
+            std::system(("kill $(cat " + (dir_ / "sim.pid").string() + ") 2>/dev/null").c_str());
+        }
+    }
+
+    Result run(const std::string& program, const std::string& arguments) const {
+        const fs::path out = dir_ / "stdout.txt";
+        const fs::path err = dir_ / "stderr.txt";
+        const std::string command =
+            program + " " + arguments + " > " + out.string() + " 2> " + err.string();
+        const int status = std::system(command.c_str());
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+    }
+
+    /// Starts legofeup-sim in the background on free ports; returns the legofeup-cli
+    /// options that reach it (empty if it did not start).
+    std::string start_server(const std::string& arguments) const {
+        const fs::path ready = dir_ / "ready";
+        const std::string command = std::string(LEGOFEUP_SIM) + " --port 0 --ready-file "
+                                    + ready.string() + " --duration 60 --quiet " + arguments
+                                    + " & echo $! > " + (dir_ / "sim.pid").string();
+        std::system(command.c_str());
+        for (int i = 0; i < 500 && !fs::exists(ready); ++i) {
+            std::this_thread::sleep_for(10ms);
+        }
+        std::istringstream ports(read_file(ready));
+        std::string robot, truth, control;
+        std::getline(ports, robot);
+        std::getline(ports, truth);
+        std::getline(ports, control);
+        if (!robot.starts_with("robot=") || !truth.starts_with("truth=")
+            || !control.starts_with("control=")) {
+            return {};
+        }
+        return "--link udp://127.0.0.1:" + robot.substr(6) + " --truth-port " + truth.substr(6)
+               + " --control-port " + control.substr(8);
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(SimCli, AnExperimentOverUdpInLockstepWritesWhatTheInProcessRunWrites) {
+    const std::string link = start_server("--time-scale 0");
+    ASSERT_FALSE(link.empty());
+    const std::string experiment = "run -e f --laps 1 --no-plots --quiet";
+    const Result udp =
+        run(LEGOFEUP_CLI, experiment + " " + link + " -o " + (dir_ / "udp").string());
+    ASSERT_EQ(udp.exit_code, 0) << udp.err;
+    const Result local = run(LEGOFEUP_CLI, experiment + " -o " + (dir_ / "local").string());
+    ASSERT_EQ(local.exit_code, 0) << local.err;
+    EXPECT_EQ(read_file(dir_ / "udp" / "trace.csv"), read_file(dir_ / "local" / "trace.csv"));
+    const std::string summary = read_file(dir_ / "udp" / "summary.json");
+    EXPECT_NE(summary.find("\"kind\": \"udp\""), std::string::npos);
+    EXPECT_NE(summary.find("\"frames_missing\": 0"), std::string::npos);
+}
+
+TEST_F(SimCli, ALinkThatIsNotAUrlOrHasNoServerIsAClearError) {
+    const Result bad = run(LEGOFEUP_CLI, "run -e f -o " + (dir_ / "x").string()
+                                             + " --link udp://simulator.local:5600");
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(bad.err.find("--link"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("udp://a.b.c.d:port"), std::string::npos) << bad.err;
+
+    const legofeup::comms::UdpSocket idle(legofeup::comms::Endpoint{0x7F000001, 0});
+    const int port = idle.local_endpoint().port;  // bound by us, so nobody answers there
+    const Result silent = run(
+        LEGOFEUP_CLI, "run -e f -o " + (dir_ / "y").string() + " --link udp://127.0.0.1:"
+                          + std::to_string(port - 2) + " --control-port " + std::to_string(port));
+    EXPECT_EQ(silent.exit_code, 3);
+    EXPECT_NE(silent.err.find("no reply from the simulator"), std::string::npos) << silent.err;
+    EXPECT_FALSE(fs::exists(dir_ / "y" / "trace.csv"));
+}
+
+TEST_F(SimCli, ServerRefusesBadOptionsWithAPreciseMessage) {
+    const Result remote = run(LEGOFEUP_SIM, "--bind 0.0.0.0 --duration 1");
+    EXPECT_EQ(remote.exit_code, 1);
+    EXPECT_NE(remote.err.find("--allow-remote"), std::string::npos) << remote.err;
+
+    const Result scale = run(LEGOFEUP_SIM, "--port 0 --time-scale -3 --duration 1");
+    EXPECT_EQ(scale.exit_code, 1);
+    EXPECT_NE(scale.err.find("server.time_scale = -3"), std::string::npos) << scale.err;
+
+    const Result noise = run(LEGOFEUP_SIM, "--port 0 --slip-noise -1 --duration 1");
+    EXPECT_EQ(noise.exit_code, 1);
+    EXPECT_NE(noise.err.find("slip_noise = -1"), std::string::npos) << noise.err;
+
+    const fs::path world = dir_ / "bad_world.toml";
+    std::ofstream(world) << "name = \"broken\"\n[[walls]]\nname = \"w\"\nfrom = [0.0, 0.0]\n"
+                            "to = \"nowhere\"\n";
+    const Result broken = run(LEGOFEUP_SIM, "--port 0 --duration 1 --world " + world.string());
+    EXPECT_EQ(broken.exit_code, 1);
+    EXPECT_NE(broken.err.find(world.string() + ":"), std::string::npos) << broken.err;
+
+    const legofeup::comms::UdpSocket taken(legofeup::comms::Endpoint{0x7F000001, 0});
+    const Result busy =
+        run(LEGOFEUP_SIM, "--duration 1 --port " + std::to_string(taken.local_endpoint().port));
+    EXPECT_EQ(busy.exit_code, 1);
+    EXPECT_NE(busy.err.find("Address already in use"), std::string::npos) << busy.err;
+}
+
+TEST_F(SimCli, ServerPrintsWhereItListensAndStopsAfterItsDuration) {
+    const Result result = run(LEGOFEUP_SIM, "--port 0 --duration 0.3");
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_NE(result.out.find("robot   udp://127.0.0.1:"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("LegoFeup standard arena"), std::string::npos) << result.out;
+}
+
+}  // namespace
