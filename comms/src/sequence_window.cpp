@@ -14,7 +14,7 @@ std::int32_t ahead_of(std::uint32_t a, std::uint32_t b) {
 Arrival SequenceWindow::classify(std::uint32_t sequence) {
     if (!started_) {
         started_ = true;
-        first_ = sequence;
+        history_ = 0;
         newest_ = sequence;
         seen_ = 1;
         ++counts_.accepted;
@@ -25,6 +25,7 @@ Arrival SequenceWindow::classify(std::uint32_t sequence) {
         counts_.missing += advance - 1;  // the numbers skipped over, until they turn up
         seen_ = advance >= kWindow ? 0 : seen_ << advance;
         seen_ |= 1;
+        history_ = advance >= kWindow - history_ ? kWindow : history_ + advance;
         newest_ = sequence;
         ++counts_.accepted;
         return Arrival::New;
@@ -37,7 +38,7 @@ Arrival SequenceWindow::classify(std::uint32_t sequence) {
             return Arrival::Duplicate;
         }
         seen_ |= bit;
-        if (ahead_of(sequence, first_) >= 0) {
+        if (age <= history_) {
             --counts_.missing;  // it was counted missing when newer ones overtook it
         }  // (older than the stream's first packet: it was never counted missing)
     }

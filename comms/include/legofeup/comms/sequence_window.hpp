@@ -32,7 +32,9 @@ class SequenceWindow {
 
   private:
     bool started_ = false;
-    std::uint32_t first_ = 0;  ///< the first number since start or restart
+    /// How many numbers before newest_ belong to this stream (at most kWindow): a late
+    /// packet within them was counted missing, one before the stream's first was not.
+    std::uint32_t history_ = 0;
     std::uint32_t newest_ = 0;
     std::uint64_t seen_ = 0;  ///< bit i: newest_ − i was received
     SequenceCounts counts_;
