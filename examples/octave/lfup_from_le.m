@@ -2,18 +2,9 @@ function value = lfup_from_le (bytes, class_name)
   % LFUP_FROM_LE  The CLASS_NAME value(s) ("uint16", "int32", "double", ...) stored
   %   little-endian in BYTES (a uint8 vector whose length is a multiple of the size).
   bytes = uint8 (bytes(:).');
-  if (host_is_big_endian ())
+  if (lfup_host_is_big_endian ())
     width = numel (typecast (zeros (1, 1, class_name), "uint8"));
     bytes = reshape (flipud (reshape (bytes, width, [])), 1, []);
   endif
   value = typecast (bytes, class_name);
-endfunction
-
-function big = host_is_big_endian ()
-  persistent answer;
-  if (isempty (answer))
-    [~, ~, endian] = computer ();
-    answer = (endian == "B");
-  endif
-  big = answer;
 endfunction

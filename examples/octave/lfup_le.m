@@ -3,17 +3,8 @@ function bytes = lfup_le (value)
   %   lfup_le (uint16 (36)) is [36 0]; each element gives sizeof(class) bytes in turn.
   %   The protocol is little-endian whatever the host (docs/protocol.md).
   bytes = typecast (value(:).', "uint8");
-  if (host_is_big_endian ())
+  if (lfup_host_is_big_endian ())
     width = numel (bytes) / numel (value);
     bytes = reshape (flipud (reshape (bytes, width, [])), 1, []);
   endif
-endfunction
-
-function big = host_is_big_endian ()
-  persistent answer;
-  if (isempty (answer))
-    [~, ~, endian] = computer ();
-    answer = (endian == "B");
-  endif
-  big = answer;
 endfunction

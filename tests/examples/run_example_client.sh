@@ -1,19 +1,22 @@
 #!/usr/bin/env bash
-# Runs examples/python/drive_square.py against a fresh legofeup-sim and checks its summary
-# line: one lap finished, about one lap's distance driven (the 2 m square: 8 m), and the
-# robot really (ground truth) back near its start (-1, -1).
+# Runs an example client (examples/python/drive_square.py or examples/octave/drive_square.m)
+# against a fresh legofeup-sim and checks its summary line: one lap finished, about one
+# lap's distance driven (the 2 m square: 8 m), and the robot really (ground truth) back
+# near its start (-1, -1).
 #
-# Usage: run_python_example.sh PATH/TO/legofeup-sim REPOSITORY_ROOT
-# The Python interpreter is $PYTHON (ctest sets it), else python3.
+# Usage: run_example_client.sh PATH/TO/legofeup-sim REPOSITORY_ROOT python|octave
+# The interpreters are $PYTHON (ctest sets it, else python3) and $OCTAVE (else octave).
 set -euo pipefail
 
-if [[ $# -ne 2 ]]; then
-    echo "usage: $0 PATH/TO/legofeup-sim REPOSITORY_ROOT" >&2
+if [[ $# -ne 3 || ( $3 != python && $3 != octave ) ]]; then
+    echo "usage: $0 PATH/TO/legofeup-sim REPOSITORY_ROOT python|octave" >&2
     exit 2
 fi
 sim=$1
 root=$2
+client=$3
 python=${PYTHON:-python3}
+octave=${OCTAVE:-octave}
 
 # Bounds. Odometry alone drives the error-free default robot back to within a few mm of
 # its start; 0.35 m leaves room for physics changes without hiding a broken client.
@@ -66,13 +69,19 @@ control_port=$(port control)
     fail "unreadable ready file: $(cat "$tmp/ready")"
 echo "legofeup-sim ready: robot=$robot_port truth=$truth_port control=$control_port"
 
-# No bytecode caches in the source tree.
 status=0
-output=$(PYTHONDONTWRITEBYTECODE=1 "$python" "$root/examples/python/drive_square.py" \
-    --port "$robot_port" --truth-port "$truth_port" --control-port "$control_port" \
-    --laps 1 --quiet --seed 7 2>&1) || status=$?
+if [[ $client == python ]]; then
+    # No bytecode caches in the source tree.
+    output=$(PYTHONDONTWRITEBYTECODE=1 "$python" "$root/examples/python/drive_square.py" \
+        --port "$robot_port" --truth-port "$truth_port" --control-port "$control_port" \
+        --laps 1 --quiet --seed 7 2>&1) || status=$?
+else
+    output=$(cd "$root/examples/octave" && "$octave" --no-gui --quiet --no-history --eval \
+        "drive_square ('port', $robot_port, 'truth_port', $truth_port, 'control_port', $control_port, 'laps', 1, 'quiet', true, 'seed', 7)" \
+        2>&1) || status=$?
+fi
 echo "$output"
-[[ $status -eq 0 ]] || fail "drive_square.py exited with status $status"
+[[ $status -eq 0 ]] || fail "the $client client exited with status $status"
 
 number='-?[0-9]+(\.[0-9]+)?'
 pattern="^finished: laps=([0-9]+) frames=([0-9]+) missing=([0-9]+) odometry=\(($number), ($number), ($number)\) truth=\(($number), ($number), ($number)\) distance_driven=($number) m$"
