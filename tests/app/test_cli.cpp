@@ -1,6 +1,5 @@
 // legofeup-cli as a user runs it: exit codes, messages, and what it writes (or not).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -8,42 +7,18 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "support/program_test.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-    int exit_code;
-    std::string out;
-    std::string err;
-};
+using legofeup::testing::read_file;
+using legofeup::testing::Result;
 
-std::string read_file(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
-class Cli : public ::testing::Test {
+class Cli : public legofeup::testing::ProgramTest {
   protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::path(LEGOFEUP_TEST_TMP) / info->name();
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-
-    Result run(const std::string& arguments) const {
-        const fs::path out = dir_ / "stdout.txt";
-        const fs::path err = dir_ / "stderr.txt";
-        const std::string command = std::string(LEGOFEUP_CLI) + " " + arguments + " > "
-                                    + out.string() + " 2> " + err.string();
-        const int status = std::system(command.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
-    }
-
-    fs::path dir_;
+    Result run(const std::string& arguments) const { return run_program(LEGOFEUP_CLI, arguments); }
 };
 
 TEST_F(Cli, PrintsItsVersionAndHelp) {

@@ -1,7 +1,6 @@
 // legofeup-sim and `legofeup-cli run --link udp://…` as a user runs them: a run against the
 // standalone server gives the lockstep run's results; bad input gets a precise message.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -11,34 +10,18 @@
 #include <thread>
 
 #include "legofeup/comms/udp_socket.hpp"
+#include "support/program_test.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
-struct Result {
-    int exit_code;
-    std::string out;
-    std::string err;
-};
+using legofeup::testing::read_file;
+using legofeup::testing::Result;
 
-std::string read_file(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
-class SimCli : public ::testing::Test {
+class SimCli : public legofeup::testing::ProgramTest {
   protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::path(LEGOFEUP_TEST_TMP) / info->name();
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-
     void TearDown() override {
         if (fs::exists(dir_ / "sim.pid")) {
             std::system(("kill $(cat " + (dir_ / "sim.pid").string() + ") 2>/dev/null").c_str());
@@ -46,12 +29,7 @@ class SimCli : public ::testing::Test {
     }
 
     Result run(const std::string& program, const std::string& arguments) const {
-        const fs::path out = dir_ / "stdout.txt";
-        const fs::path err = dir_ / "stderr.txt";
-        const std::string command =
-            program + " " + arguments + " > " + out.string() + " 2> " + err.string();
-        const int status = std::system(command.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+        return run_program(program, arguments);
     }
 
     /// Starts legofeup-sim in the background on free ports; returns the legofeup-cli
@@ -77,8 +55,6 @@ class SimCli : public ::testing::Test {
         return "--link udp://127.0.0.1:" + robot.substr(6) + " --truth-port " + truth.substr(6)
                + " --control-port " + control.substr(8);
     }
-
-    fs::path dir_;
 };
 
 TEST_F(SimCli, AnExperimentOverUdpInLockstepWritesWhatTheInProcessRunWrites) {
