@@ -1,5 +1,6 @@
 #include "legofeup/simserver/sim_server.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -14,6 +15,8 @@ using comms::PacketType;
 
 /// The loop looks at its stop token at least this often.
 constexpr std::chrono::microseconds kLongestWait = 100ms;
+/// How far behind real time the server may fall and still catch up (see advance()).
+constexpr Clock::duration kCatchUpLimit = 50ms;
 
 comms::Endpoint with_port(comms::Endpoint endpoint, std::uint16_t port) {
     endpoint.port = port;
@@ -101,9 +104,11 @@ void SimServer::State::advance(Clock::time_point now) {
     if (options.time_scale > 0.0) {
         const Clock::duration interval = frame_interval();
         next_step_at += interval;
-        if (now - next_step_at > interval) {
-            // More than a period behind (a stalled machine): count it and resume from now
-            // rather than firing a burst of frames to catch up.
+        // A short delay (the scheduler, at 1 kHz) is caught up by stepping the late periods
+        // at once, so simulated time stays locked to real time. Beyond kCatchUpLimit (or a
+        // period, if longer) the machine stalled: count it and resume from now rather than
+        // firing a long burst of frames.
+        if (now - next_step_at > std::max(interval, kCatchUpLimit)) {
             ++counters.overruns;
             next_step_at = now + interval;
         }

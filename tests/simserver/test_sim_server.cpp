@@ -62,6 +62,19 @@ TEST(SimServer, SendsAFrameEveryControlPeriodToItsClient) {
     }
 }
 
+TEST(SimServer, PacesSimulatedTimeToRealTimeTimesTheScale) {
+    const auto started = std::chrono::steady_clock::now();
+    const auto server = start_test_server(10.0);  // 200 periods of 0.05 s per real second
+    std::this_thread::sleep_for(1s);
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const comms::ServerStatus status = server->status();
+    const double expected = elapsed * 10.0 / 0.05;
+    // Late periods are caught up (up to 50 ms behind), so only a stalled machine lags.
+    EXPECT_LE(static_cast<double>(status.steps), expected + 1.0);
+    EXPECT_GE(static_cast<double>(status.steps), 0.9 * expected);
+}
+
 TEST(SimServer, CommandsDriveTheRobotAndTheTruthStreamShowsIt) {
     const auto server = start_test_server(0.0);  // lockstep: every command advances a period
     comms::TruthReceiver truth(loopback(server->ports().truth));

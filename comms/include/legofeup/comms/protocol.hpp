@@ -201,7 +201,7 @@ struct ServerCounters {
     std::uint64_t unexpected_peer = 0;  ///< robot-stream packets from a non-client
     std::uint64_t watchdog_stops = 0;   ///< times the motors were stopped for silence
     std::uint64_t control_requests = 0;
-    std::uint64_t overruns = 0;  ///< periods the server fell more than one period behind
+    std::uint64_t overruns = 0;  ///< times the server fell > max(50 ms, a period) behind
 };
 
 /// Adds one to the counter for a decode error (None adds nothing).
