@@ -17,9 +17,9 @@
 #include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
+#include "legofeup/lessons/udp_run.hpp"
 #include "progress_bar.hpp"
 #include "run_plots.hpp"
-#include "udp_run.hpp"
 
 namespace legofeup::cli {
 namespace {
@@ -100,7 +100,7 @@ class AtomicFile {
 
 /// The link a run uses: the deterministic in-process simulator, or a server over UDP.
 struct LinkChoice {
-    std::optional<UdpTarget> udp;  ///< unset: lockstep
+    std::optional<lessons::UdpTarget> udp;  ///< unset: lockstep
 
     std::string describe() const { return udp ? "udp://" + udp->robot.to_string() : "lockstep"; }
 };
@@ -109,10 +109,10 @@ LinkChoice choose_link(const RunOptions& options) {
     if (options.link == "lockstep") {
         return {};
     }
-    return {parse_udp_target(options.link, options.truth_port, options.control_port)};
+    return {lessons::parse_udp_target(options.link, options.truth_port, options.control_port)};
 }
 
-nlohmann::json link_to_json(const LinkChoice& link, const UdpRunReport& report) {
+nlohmann::json link_to_json(const LinkChoice& link, const lessons::UdpRunReport& report) {
     if (!link.udp) {
         return {{"kind", "lockstep"}};
     }
@@ -122,10 +122,10 @@ nlohmann::json link_to_json(const LinkChoice& link, const UdpRunReport& report) 
         {"robot", link.udp->robot.to_string()},
         {"truth", link.udp->truth.to_string()},
         {"control", link.udp->control.to_string()},
-        {"frames_received", report.frames_received},
-        {"frames_duplicate", report.frames_duplicate},
-        {"frames_late", report.frames_late},
-        {"frame_timeouts", report.frames_timed_out},
+        {"frames_received", report.link.frames.accepted},
+        {"frames_duplicate", report.link.frames.duplicate},
+        {"frames_late", report.link.frames.late},
+        {"frame_timeouts", report.link.timeouts},
         {"server_time_scale", report.server.time_scale},
         {"server_commands_accepted", c.commands_accepted},
         {"server_commands_missing", c.commands_missing},
@@ -202,9 +202,9 @@ int run_command(const RunOptions& options) {
             std::snprintf(detail, sizeof detail, "%.0f s simulated", simulated);
             progress.update(fraction, detail);
         };
-        UdpRunReport report;
+        lessons::UdpRunReport report;
         if (link.udp) {
-            report = run_over_udp(run, *link.udp, &observers, show_progress);
+            report = lessons::run_over_udp(run, *link.udp, &observers, show_progress);
         } else {
             report.result = lessons::run_lockstep(run, &observers, show_progress);
         }

@@ -21,13 +21,11 @@ namespace {
 simserver::SimServerOptions server_options(const ServerCommand& command,
                                            const comms::Endpoint& bind) {
     simserver::SimServerOptions options;
-    options.bind = bind;
-    const auto port = static_cast<std::uint16_t>(command.port);
+    options.bind = bind.with_port(static_cast<std::uint16_t>(command.port));
     options.truth_port = static_cast<std::uint16_t>(
         command.truth_port.value_or(command.port == 0 ? 0 : command.port + 1));
     options.control_port = static_cast<std::uint16_t>(
         command.control_port.value_or(command.port == 0 ? 0 : command.port + 2));
-    options.bind.port = port;
     options.time_scale = command.time_scale;
     options.allow_remote = command.allow_remote;
     return options;

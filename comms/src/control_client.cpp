@@ -18,7 +18,7 @@ ControlRequestPacket make(ControlOp op) {
 ControlClient::ControlClient(const Endpoint& server, std::chrono::milliseconds reply_timeout,
                              int attempts)
     : server_(server),
-      socket_(Endpoint{server.is_loopback() ? server.address : 0, 0}),
+      socket_(client_endpoint_for(server)),
       reply_timeout_(reply_timeout),
       attempts_(attempts) {}
 

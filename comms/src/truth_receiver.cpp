@@ -10,7 +10,7 @@ constexpr std::chrono::seconds kRenewEvery{1};
 }  // namespace
 
 TruthReceiver::TruthReceiver(const Endpoint& server)
-    : server_(server), socket_(Endpoint{server.is_loopback() ? server.address : 0, 0}) {
+    : server_(server), socket_(client_endpoint_for(server)) {
     subscribe();
 }
 
@@ -45,7 +45,7 @@ void TruthReceiver::poll(std::chrono::microseconds timeout) {
     }
 }
 
-std::optional<GroundTruth> TruthReceiver::at(double time) {
+std::optional<GroundTruth> TruthReceiver::truth_at(double time) {
     poll();
     const std::uint64_t wanted = to_microseconds(time);
     std::optional<GroundTruth> before;

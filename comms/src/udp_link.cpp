@@ -13,11 +13,6 @@ constexpr std::chrono::milliseconds kConnectRetry{200};
 /// Lockstep servers advance after 100 ms without an answer (docs/protocol.md).
 constexpr std::chrono::microseconds kLockstepFrameTimeout{150'000};
 
-/// An ephemeral port on the interface that reaches the server.
-Endpoint client_address(const Endpoint& server) {
-    return {server.is_loopback() ? server.address : 0, 0};
-}
-
 std::chrono::microseconds default_frame_timeout(double control_period, double time_scale) {
     if (time_scale <= 0.0) {
         return kLockstepFrameTimeout;
@@ -29,7 +24,7 @@ std::chrono::microseconds default_frame_timeout(double control_period, double ti
 }  // namespace
 
 UdpSimulatorLink::UdpSimulatorLink(UdpLinkOptions options)
-    : options_(options), socket_(client_address(options.server)) {}
+    : options_(options), socket_(client_endpoint_for(options.server)) {}
 
 UdpSimulatorLink::~UdpSimulatorLink() {
     if (connected_) {

@@ -43,13 +43,22 @@ void ConfigChecker::positive(const std::string& field, double value, double high
             "must be greater than 0 and at most " + format_config_number(high));
 }
 
+std::string join_issue_messages(const std::vector<ConfigIssue>& issues,
+                                std::string_view separator) {
+    std::string text;
+    for (const ConfigIssue& issue : issues) {
+        if (!text.empty()) {
+            text += separator;
+        }
+        text += issue.message();
+    }
+    return text;
+}
+
 std::invalid_argument invalid_configuration(std::string_view what,
                                             const std::vector<ConfigIssue>& issues) {
-    std::string text = "invalid " + std::string(what) + " configuration:";
-    for (const ConfigIssue& issue : issues) {
-        text += "\n  " + issue.message();
-    }
-    return std::invalid_argument(text);
+    return std::invalid_argument("invalid " + std::string(what) + " configuration:\n  "
+                                 + join_issue_messages(issues, "\n  "));
 }
 
 }  // namespace legofeup

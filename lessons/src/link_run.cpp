@@ -86,15 +86,14 @@ RunResult run_with_link(const ResolvedRun& run, RobotLink& link, TruthSource& tr
         const std::optional<SensorFrame> frame = link.next_frame();
         bool done = false;
         if (!frame) {
-            if (!book.started()) {
-                if (++silent_periods >= kMaxSilentPeriods) {
-                    throw LinkSilent("the link delivered no first frame");
-                }
-                continue;
-            }
             if (++silent_periods >= kMaxSilentPeriods) {
-                throw LinkSilent("the link delivered no frame for "
-                                 + std::to_string(kMaxSilentPeriods) + " control periods");
+                throw LinkSilent(book.started()
+                                     ? "the link delivered no frame for "
+                                           + std::to_string(kMaxSilentPeriods) + " control periods"
+                                     : "the link delivered no first frame");
+            }
+            if (!book.started()) {
+                continue;  // nothing to predict from yet
             }
             ++result.frames_missing;
             done = record(loop.step_without_frame(book.due_time(period)));

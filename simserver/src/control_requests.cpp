@@ -14,14 +14,6 @@ namespace {
 using comms::ControlOp;
 using comms::ControlResult;
 
-std::string join_issues(const std::vector<ConfigIssue>& issues) {
-    std::string text;
-    for (const ConfigIssue& issue : issues) {
-        text += (text.empty() ? "" : "; ") + issue.message();
-    }
-    return text;
-}
-
 }  // namespace
 
 std::string SimServer::State::check_pose_in_arena(const Pose2& pose) const {
@@ -101,7 +93,7 @@ comms::ControlReplyPacket SimServer::State::carry_out(const comms::ControlReques
             changed.slip_noise = request.noise.slip_noise;
             changed.ir_noise = request.noise.ir_noise;
             if (const auto issues = sim::validate(changed); !issues.empty()) {
-                refuse("set noise: " + join_issues(issues));
+                refuse("set noise: " + join_issue_messages(issues, "; "));
                 break;
             }
             simulator.set_robot(changed);
@@ -119,7 +111,7 @@ comms::ControlReplyPacket SimServer::State::carry_out(const comms::ControlReques
             SimServerOptions changed = options;
             changed.time_scale = request.time_scale;
             if (const auto issues = validate(changed); !issues.empty()) {
-                refuse("set time scale: " + join_issues(issues));
+                refuse("set time scale: " + join_issue_messages(issues, "; "));
                 break;
             }
             options = changed;

@@ -18,11 +18,6 @@ constexpr std::chrono::microseconds kLongestWait = 100ms;
 /// How far behind real time the server may fall and still catch up (see advance()).
 constexpr Clock::duration kCatchUpLimit = 50ms;
 
-comms::Endpoint with_port(comms::Endpoint endpoint, std::uint16_t port) {
-    endpoint.port = port;
-    return endpoint;
-}
-
 std::uint16_t port_or_free(const SimServerOptions& options, std::uint16_t port) {
     return options.bind.port == 0 ? 0 : port;
 }
@@ -54,8 +49,8 @@ SimServer::State::State(sim::WorldSpec world, sim::RobotSpec robot_spec,
       options(server_options),
       seed(seed_value),
       robot_socket(options.bind),
-      truth_socket(with_port(options.bind, port_or_free(options, options.truth_port))),
-      control_socket(with_port(options.bind, port_or_free(options, options.control_port))),
+      truth_socket(options.bind.with_port(port_or_free(options, options.truth_port))),
+      control_socket(options.bind.with_port(port_or_free(options, options.control_port))),
       session(options.peer_timeout) {
     restart_clock(Clock::now());
     publish_status();

@@ -93,7 +93,7 @@ TEST(SimServer, CommandsDriveTheRobotAndTheTruthStreamShowsIt) {
         link.send_command({0.1, 0.1});
     }
     truth.poll(200ms);
-    const auto seen = truth.at(last_time);
+    const auto seen = truth.truth_at(last_time);
     ASSERT_TRUE(seen);
     EXPECT_NEAR(seen->time, last_time, 1e-6);
     EXPECT_GT(seen->pose.x - start.x, 0.15);  // ≈ 0.2 m less the motors' spin-up
@@ -131,7 +131,7 @@ TEST(SimServer, WatchdogStopsTheMotorsWhenCommandsCeaseForTwoPeriods) {
         time = frame->time;
     }
     truth.poll(200ms);
-    const auto seen = truth.at(time);
+    const auto seen = truth.truth_at(time);
     ASSERT_TRUE(seen);
     EXPECT_LT(std::abs(seen->velocity.v), 0.005);
     EXPECT_EQ(server->status().counters.watchdog_stops, 1U);
@@ -213,7 +213,7 @@ TEST(SimServer, ResetPauseResumeTeleportAndNoiseRequests) {
     EXPECT_EQ(first->time, 0.0);
     EXPECT_EQ(first->encoder_counts, (std::array<std::int32_t, 2>{0, 0}));
     truth.poll(100ms);
-    const auto at_start = truth.at(0.0);
+    const auto at_start = truth.truth_at(0.0);
     ASSERT_TRUE(at_start);
     EXPECT_NEAR(at_start->pose.x, 0.5, 1e-6);
     EXPECT_NEAR(at_start->pose.theta, 1.0, 1e-6);
@@ -242,7 +242,7 @@ TEST(SimServer, ResetPauseResumeTeleportAndNoiseRequests) {
     const auto after = link.next_frame();
     ASSERT_TRUE(after);
     truth.poll(100ms);
-    const auto moved = truth.at(after->time);
+    const auto moved = truth.truth_at(after->time);
     ASSERT_TRUE(moved);
     EXPECT_NEAR(moved->pose.x, -0.5, 0.01);
     EXPECT_NEAR(moved->pose.y, 0.75, 0.01);

@@ -5,17 +5,14 @@
 
 #include <vector>
 
-#include "legofeup/comms/control_client.hpp"
-#include "legofeup/comms/truth_receiver.hpp"
-#include "legofeup/comms/udp_link.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/lockstep_run.hpp"
+#include "legofeup/lessons/udp_run.hpp"
 #include "support/test_server.hpp"
 
 namespace legofeup {
 namespace {
 
-using namespace std::chrono_literals;
 using testing::loopback;
 
 class Recorder final : public lessons::RunObserver {
@@ -28,36 +25,20 @@ class Recorder final : public lessons::RunObserver {
     std::vector<GroundTruth> truths;
 };
 
-class ReceiverTruth final : public lessons::TruthSource {
-  public:
-    explicit ReceiverTruth(comms::TruthReceiver& receiver) : receiver_(receiver) {}
-    std::optional<GroundTruth> truth_at(double time) override { return receiver_.at(time); }
-
-  private:
-    comms::TruthReceiver& receiver_;
-};
-
 lessons::ResolvedRun one_lap_of_f() {
     lessons::RunConfig config = lessons::find_experiment("f")->config;
     config.laps = 1;
     return lessons::resolve(config);
 }
 
+/// The run as `legofeup-cli run --link udp://…` does it, against a fresh server.
 lessons::RunResult run_over_udp(const lessons::ResolvedRun& run, double time_scale,
                                 Recorder& recorder) {
     const auto server = testing::start_test_server(time_scale);
-    comms::ControlClient control(loopback(server->ports().control));
-    comms::TruthReceiver truth(loopback(server->ports().truth));
-    control.set_noise({run.robot.wheel_diameter_ratio, run.robot.wheel_base_ratio,
-                       run.robot.slip_noise, run.robot.ir_noise});
-    comms::UdpLinkOptions options;
-    options.server = loopback(server->ports().robot);
-    comms::UdpSimulatorLink link(options);
-    link.connect();
-    control.reset(run.config.seed, run.true_start);
-    EXPECT_TRUE(link.await_reset(1s));
-    ReceiverTruth source(truth);
-    return lessons::run_with_link(run, link, source, &recorder);
+    const simserver::BoundPorts ports = server->ports();
+    const lessons::UdpTarget target{loopback(ports.robot), loopback(ports.truth),
+                                    loopback(ports.control)};
+    return lessons::run_over_udp(run, target, &recorder).result;
 }
 
 TEST(UdpRun, LockstepModeReproducesTheInProcessRunExactly) {

@@ -14,9 +14,16 @@ struct Endpoint {
 
     bool is_loopback() const { return (address >> 24) == 127; }
     std::string to_string() const;  ///< "127.0.0.1:5600"
+    Endpoint with_port(std::uint16_t other_port) const { return {address, other_port}; }
 
     friend bool operator==(const Endpoint&, const Endpoint&) = default;
 };
+
+/// Where a client binds to reach `server`: a free port on loopback for a loopback server,
+/// else on every interface.
+inline Endpoint client_endpoint_for(const Endpoint& server) {
+    return {server.is_loopback() ? server.address : 0, 0};
+}
 
 /// Parses "a.b.c.d:port" (port 0 … 65535) or, for the port alone, "a.b.c.d" with
 /// `default_port`. Returns nullopt for anything else; names are not resolved.

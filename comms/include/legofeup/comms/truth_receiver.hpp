@@ -9,14 +9,15 @@
 #include "legofeup/comms/protocol.hpp"
 #include "legofeup/comms/sequence_window.hpp"
 #include "legofeup/comms/udp_socket.hpp"
+#include "legofeup/core/truth_source.hpp"
 
 namespace legofeup::comms {
 
-class TruthReceiver {
+class TruthReceiver final : public TruthSource {
   public:
     /// `server` is the truth port. Subscribes at once; poll() renews the subscription.
     explicit TruthReceiver(const Endpoint& server);
-    ~TruthReceiver();
+    ~TruthReceiver() override;
     TruthReceiver(const TruthReceiver&) = delete;
     TruthReceiver& operator=(const TruthReceiver&) = delete;
 
@@ -25,7 +26,7 @@ class TruthReceiver {
 
     /// The truth at exactly `time` (to the microsecond) if it arrived, else the newest one
     /// before it; nullopt if none did. Polls first.
-    std::optional<GroundTruth> at(double time);
+    std::optional<GroundTruth> truth_at(double time) override;
     std::optional<GroundTruth> latest() const;
 
     const SequenceCounts& counts() const { return window_.counts(); }

@@ -39,6 +39,9 @@ class ConfigChecker {
     std::vector<ConfigIssue>& issues_;
 };
 
+/// Every issue's message, joined by `separator`.
+std::string join_issue_messages(const std::vector<ConfigIssue>& issues, std::string_view separator);
+
 /// The exception a constructor throws for an invalid configuration: "invalid <what>
 /// configuration:" followed by one issue per line.
 std::invalid_argument invalid_configuration(std::string_view what,

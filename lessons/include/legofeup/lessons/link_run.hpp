@@ -14,6 +14,7 @@
 #include "legofeup/core/ground_truth.hpp"
 #include "legofeup/core/robot_link.hpp"
 #include "legofeup/core/run_metrics.hpp"
+#include "legofeup/core/truth_source.hpp"
 #include "legofeup/lessons/run_config.hpp"
 
 namespace legofeup::lessons {
@@ -23,14 +24,6 @@ class RunObserver {
   public:
     virtual ~RunObserver() = default;
     virtual void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) = 0;
-};
-
-/// Where the truth comes from: the simulator itself, or its truth stream over UDP.
-class TruthSource {
-  public:
-    virtual ~TruthSource() = default;
-    /// The truth at `time` (or the newest before it); nullopt if none is known.
-    virtual std::optional<GroundTruth> truth_at(double time) = 0;
 };
 
 struct RunResult {

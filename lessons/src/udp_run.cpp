@@ -1,35 +1,20 @@
-#include "udp_run.hpp"
+#include "legofeup/lessons/udp_run.hpp"
 
 #include <cmath>
 
 #include "legofeup/comms/control_client.hpp"
 #include "legofeup/comms/link_error.hpp"
 #include "legofeup/comms/truth_receiver.hpp"
-#include "legofeup/comms/udp_link.hpp"
 #include "legofeup/core/config_issue.hpp"
 #include "legofeup/lessons/input_error.hpp"
 
-namespace legofeup::cli {
+namespace legofeup::lessons {
 namespace {
 
 using namespace std::chrono_literals;
 
-class UdpTruth final : public lessons::TruthSource {
-  public:
-    explicit UdpTruth(comms::TruthReceiver& receiver) : receiver_(receiver) {}
-    std::optional<GroundTruth> truth_at(double time) override { return receiver_.at(time); }
-
-  private:
-    comms::TruthReceiver& receiver_;
-};
-
 comms::NoiseSettings noise_of(const sim::RobotSpec& robot) {
     return {robot.wheel_diameter_ratio, robot.wheel_base_ratio, robot.slip_noise, robot.ir_noise};
-}
-
-comms::Endpoint with_port(comms::Endpoint endpoint, int port) {
-    endpoint.port = static_cast<std::uint16_t>(port);
-    return endpoint;
 }
 
 }  // namespace
@@ -37,18 +22,20 @@ comms::Endpoint with_port(comms::Endpoint endpoint, int port) {
 UdpTarget parse_udp_target(const std::string& url, int truth_port, int control_port) {
     const auto robot = comms::parse_udp_url(url);
     if (!robot || robot->port == 0 || (truth_port == 0 && robot->port > 65533)) {
-        throw lessons::InputError({{"", 0, "--link", url,
-                                    "expected lockstep or udp://a.b.c.d:port (an IPv4 address "
-                                    "and the simulator's robot port, e.g. "
-                                    "udp://127.0.0.1:5600)"}});
+        throw InputError({{"", 0, "--link", url,
+                           "expected lockstep or udp://a.b.c.d:port (an IPv4 address "
+                           "and the simulator's robot port, e.g. "
+                           "udp://127.0.0.1:5600)"}});
     }
-    return {*robot, with_port(*robot, truth_port != 0 ? truth_port : robot->port + 1),
-            with_port(*robot, control_port != 0 ? control_port : robot->port + 2)};
+    const auto port_or = [](int given, int fallback) {
+        return static_cast<std::uint16_t>(given != 0 ? given : fallback);
+    };
+    return {*robot, robot->with_port(port_or(truth_port, robot->port + 1)),
+            robot->with_port(port_or(control_port, robot->port + 2))};
 }
 
-UdpRunReport run_over_udp(const lessons::ResolvedRun& run, const UdpTarget& target,
-                          lessons::RunObserver* observer,
-                          const lessons::ProgressCallback& progress) {
+UdpRunReport run_over_udp(const ResolvedRun& run, const UdpTarget& target, RunObserver* observer,
+                          const ProgressCallback& progress) {
     comms::ControlClient control(target.control);
     const comms::ServerStatus status = control.status();
     const double period = run.config.simulator.control_period;
@@ -74,17 +61,12 @@ UdpRunReport run_over_udp(const lessons::ResolvedRun& run, const UdpTarget& targ
                                + " sent no frame after the reset");
     }
 
-    UdpTruth truth_source(truth);
     UdpRunReport report;
-    report.result = lessons::run_with_link(run, link, truth_source, observer, progress);
+    report.result = run_with_link(run, link, truth, observer, progress);
     link.disconnect();
     report.server = control.status();
-    const comms::LinkCounters counters = link.counters();
-    report.frames_received = counters.frames.accepted;
-    report.frames_duplicate = counters.frames.duplicate;
-    report.frames_late = counters.frames.late;
-    report.frames_timed_out = counters.timeouts;
+    report.link = link.counters();
     return report;
 }
 
-}  // namespace legofeup::cli
+}  // namespace legofeup::lessons

@@ -1,0 +1,34 @@
+#pragma once
+// A run against a running simulator server over UDP (docs/protocol.md) instead of the
+// in-process simulator: `legofeup-cli run --link udp://HOST:PORT`, and the tests.
+
+#include <string>
+
+#include "legofeup/comms/udp_link.hpp"
+#include "legofeup/lessons/link_run.hpp"
+
+namespace legofeup::lessons {
+
+struct UdpTarget {
+    comms::Endpoint robot;
+    comms::Endpoint truth;
+    comms::Endpoint control;
+};
+
+/// Parses "udp://a.b.c.d[:port]"; truth and control default to port+1 and port+2.
+/// Throws InputError naming the --link option for anything else.
+UdpTarget parse_udp_target(const std::string& url, int truth_port, int control_port);
+
+struct UdpRunReport {
+    RunResult result;
+    comms::ServerStatus server;  ///< the server's status and counters after the run
+    comms::LinkCounters link;    ///< what the client's end of the robot stream counted
+};
+
+/// Checks the server runs the run's control period, gives it the run's noise, takes the
+/// robot, resets it to the run's seed and true start, and runs. Throws comms::LinkError
+/// (or LinkSilent) with what went wrong and what to do.
+UdpRunReport run_over_udp(const ResolvedRun& run, const UdpTarget& target,
+                          RunObserver* observer = nullptr, const ProgressCallback& progress = {});
+
+}  // namespace legofeup::lessons
