@@ -33,10 +33,12 @@ TEST(LossyLink, LoopKeepsRunningAndBothEndsCountExactlyWhatWasInjected) {
     LegoFeupLoop loop(run.loop);
     // A few clean periods first: a stream's first packet is where counting starts, so a
     // loss before it could not be seen by anyone.
-    for (int period = 0; period < 5; ++period) {
-        ASSERT_TRUE(link.next_frame());
+    int warm_up_frames = 0;
+    for (int attempt = 0; attempt < 500 && warm_up_frames < 5; ++attempt) {
+        warm_up_frames += link.next_frame() ? 1 : 0;
         link.send_command({});
     }
+    ASSERT_EQ(warm_up_frames, 5);
 
     // Faults only now: 30 % loss, 10 % duplicates, 10 % reordering, in both directions.
     const testing::FaultRates faults{0.30, 0.10, 0.10};
@@ -57,11 +59,14 @@ TEST(LossyLink, LoopKeepsRunningAndBothEndsCountExactlyWhatWasInjected) {
     EXPECT_GT(predicted_only, 40);  // ≈ 30 % of the periods had no frame in time
 
     // A loss-free tail, so every gap is followed by a packet that reveals it.
+    // (A loaded machine may still be late with a frame: only the ones that came count.)
     relay.set_rates({}, {});
-    for (int period = 0; period < 10; ++period) {
-        ASSERT_TRUE(link.next_frame());
+    int clean_frames = 0;
+    for (int attempt = 0; attempt < 500 && clean_frames < 10; ++attempt) {
+        clean_frames += link.next_frame() ? 1 : 0;
         link.send_command(loop.snapshot().wheels);
     }
+    ASSERT_EQ(clean_frames, 10);
     std::this_thread::sleep_for(50ms);
 
     const testing::FaultCounts commands = relay.to_server_counts();
