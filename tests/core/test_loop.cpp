@@ -193,6 +193,40 @@ TEST(LegoFeupLoop, EncoderGlitchIsFlaggedAndSkipped) {
     EXPECT_EQ(loop.step(frame).predict_status, StepStatus::Applied);
 }
 
+TEST(LegoFeupLoop, AMissingFrameOnlyPredictsAndTheNextFrameBringsItsMotion) {
+    LegoFeupLoop with_gap(LoopConfig{});
+    LegoFeupLoop without_gap(LoopConfig{});
+    SensorFrame frame;
+    frame.ir_valid = {false, false};
+    with_gap.step(frame);
+    const StateCovariance P0 = without_gap.step(frame).covariance;
+
+    frame.time = 0.05;
+    frame.encoder_counts = {50, 50};
+    without_gap.step(frame);
+    const LoopSnapshot& missing = with_gap.step_without_frame(0.05);  // frame 2 never came
+    EXPECT_TRUE(missing.frame_missing);
+    EXPECT_DOUBLE_EQ(missing.time, 0.05);
+    EXPECT_FALSE(missing.observation_available);
+    EXPECT_EQ(missing.predict_status, StepStatus::Applied);
+    EXPECT_EQ(missing.estimate, to_state(with_gap.config().initial.pose));  // X̂ unchanged
+    // P ← P + ∇f_q Q ∇f_qᵀ with d = 0 at θ = 0: ∇f_q = [[1, 0], [0, 0], [0, 1]], so Q₁₁
+    // adds to P_xx and Q₂₂ to P_θθ (worked by hand from eq. 12).
+    StateCovariance expected = P0;
+    expected(kX, kX) += with_gap.config().filter.q11;
+    expected(kTheta, kTheta) += with_gap.config().filter.q22;
+    EXPECT_TRUE(missing.covariance.isApprox(expected, 1e-12)) << missing.covariance;
+
+    // Frame 3's cumulative counts bring frame 2's motion too: both loops end at the same x.
+    frame.time = 0.1;
+    frame.encoder_counts = {100, 100};
+    const double x_without_gap = without_gap.step(frame).estimate(kX);
+    const LoopSnapshot& resumed = with_gap.step(frame);
+    EXPECT_FALSE(resumed.frame_missing);
+    EXPECT_NEAR(resumed.estimate(kX), x_without_gap, 1e-12);
+    EXPECT_NEAR(resumed.odometry_pose.x, x_without_gap, 1e-12);
+}
+
 TEST(LegoFeupLoop, ResetReturnsToTheInitialBelief) {
     LegoFeupLoop loop(LoopConfig{});
     KinematicRobot robot(loop.config().initial.pose, KinematicRobotParams{});

@@ -261,6 +261,13 @@ TEST(SimServer, ResetPauseResumeTeleportAndNoiseRequests) {
         EXPECT_NE(std::string(error.what()).find("outside the arena"), std::string::npos)
             << error.what();
     }
+    // Every side of the arena, and inside the walls but too close for the chassis (the
+    // walls are at ±1.21 m; the chassis reaches 0.106 m from the axle).
+    for (const Pose2 pose : {Pose2{-5.0, 0.0, 0.0}, Pose2{0.0, 5.0, 0.0}, Pose2{0.0, -5.0, 0.0},
+                             Pose2{-1.15, 0.0, 0.0}, Pose2{0.0, 1.15, 0.0}}) {
+        EXPECT_THROW(control.teleport(pose), comms::LinkError) << pose.x << ", " << pose.y;
+    }
+    EXPECT_NO_THROW(control.teleport(Pose2{-1.0, 1.0, 0.0}));
 
     // Noise: validated by the simulator's own rules, with the field named.
     comms::NoiseSettings noise{1.01, 1.02, 0.001, 0.004};
@@ -345,13 +352,18 @@ TEST(SimServer, DropsAndCountsEveryKindOfMalformedPacketAndKeepsServing) {
     send(nan_command, ports.control, 7);       // a command on the control port: wrong stream
     send(late_time, ports.robot, 8);           // bad time
     send(frame_to_control, ports.control, 9);  // wrong stream
+    send(frame_to_control, ports.truth, 2);    // wrong stream: a frame to the truth port
+    send(encode(comms::BarePacket{comms::PacketType::Connect, 1, 0.0}), ports.truth,
+         3);  // wrong stream: a valid header-only packet of the robot stream
+    send(encode(comms::BarePacket{comms::PacketType::TruthSubscribe, 1, 0.0}), ports.robot,
+         4);  // wrong stream: a truth subscription to the robot port
     for (int i = 0; i < 10; ++i) {
         stranger.send_to(encode(comms::CommandPacket{static_cast<std::uint32_t>(i), 0.0, {}}),
                          loopback(ports.robot));  // a valid command from a stranger
     }
 
     const auto status = wait_for_status(*server, [](const comms::ServerStatus& s) {
-        return s.counters.unexpected_peer >= 10 && s.counters.wrong_stream >= 16;
+        return s.counters.unexpected_peer >= 10 && s.counters.wrong_stream >= 25;
     });
     const comms::ServerCounters& c = status.counters;
     EXPECT_EQ(c.truncated, 1U);
@@ -361,7 +373,7 @@ TEST(SimServer, DropsAndCountsEveryKindOfMalformedPacketAndKeepsServing) {
     EXPECT_EQ(c.bad_length, 5U);
     EXPECT_EQ(c.oversized, 6U);
     EXPECT_EQ(c.bad_time, 8U);
-    EXPECT_EQ(c.wrong_stream, 16U);
+    EXPECT_EQ(c.wrong_stream, 25U);  // 16 to control, 5 to truth, 4 to robot
     EXPECT_EQ(c.unexpected_peer, 10U);
     EXPECT_EQ(c.non_finite, 0U);
 
