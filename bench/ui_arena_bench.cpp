@@ -1,0 +1,1 @@
+// Arena view frame-time benchmarks (filled in with the arena view).

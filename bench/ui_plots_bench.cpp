@@ -1,0 +1,1 @@
+// Plot frame-time benchmarks (filled in with the plots).

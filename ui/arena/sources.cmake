@@ -1,0 +1,3 @@
+# arena
+list(APPEND LEGOFEUP_UI_SOURCES
+)

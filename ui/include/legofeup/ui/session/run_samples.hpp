@@ -1,0 +1,30 @@
+#pragma once
+// Turning a step of the loop (and the truth at its time) into what the views draw.
+
+#include <optional>
+
+#include "legofeup/lessons/link_run.hpp"
+#include "legofeup/lessons/run_config.hpp"
+#include "legofeup/ui/run_history.hpp"
+
+namespace legofeup::ui {
+
+/// The sample of one step, with its NEES computed when the truth is known.
+RunSample make_run_sample(const LoopSnapshot& snapshot, const std::optional<GroundTruth>& truth);
+
+/// The walls, the intended path and the IR mounting of a run, for the arena view.
+ArenaScene scene_of(const lessons::ResolvedRun& run);
+
+/// Collects every step of a run as samples (tests, benchmarks and recorded runs).
+class SampleCollector final : public lessons::RunObserver {
+  public:
+    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
+        samples_.push_back(make_run_sample(snapshot, truth));
+    }
+    std::vector<RunSample> take() { return std::move(samples_); }
+
+  private:
+    std::vector<RunSample> samples_;
+};
+
+}  // namespace legofeup::ui

@@ -1,0 +1,3 @@
+# panels
+list(APPEND LEGOFEUP_UI_SOURCES
+)

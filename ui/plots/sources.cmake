@@ -1,0 +1,3 @@
+# plots
+list(APPEND LEGOFEUP_UI_SOURCES
+)

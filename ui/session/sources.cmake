@@ -1,0 +1,4 @@
+# The session: owns the run (its link and loop on a worker thread) and its history.
+list(APPEND LEGOFEUP_UI_SOURCES
+    session/run_samples.cpp
+)

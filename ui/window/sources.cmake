@@ -1,0 +1,3 @@
+# window
+list(APPEND LEGOFEUP_UI_SOURCES
+)
