@@ -2,9 +2,7 @@
 
 #include <cmath>
 
-#include "legofeup/comms/control_client.hpp"
 #include "legofeup/comms/link_error.hpp"
-#include "legofeup/comms/truth_receiver.hpp"
 #include "legofeup/core/config_issue.hpp"
 #include "legofeup/lessons/input_error.hpp"
 
@@ -13,11 +11,55 @@ namespace {
 
 using namespace std::chrono_literals;
 
-comms::NoiseSettings noise_of(const sim::RobotSpec& robot) {
-    return {robot.wheel_diameter_ratio, robot.wheel_base_ratio, robot.slip_noise, robot.ir_noise};
+/// The run's control period must be the server's: the loop's noise model is per period.
+void check_control_period(comms::ControlClient& control, const ResolvedRun& run,
+                          const UdpTarget& target) {
+    const comms::ServerStatus status = control.status();
+    const double period = run.config.simulator.control_period;
+    if (std::abs(status.control_period - period) > 1e-9) {
+        throw comms::LinkError("the simulator at " + target.robot.to_string() + " runs "
+                               + format_config_number(status.control_period)
+                               + " s control periods, the run " + format_config_number(period)
+                               + " s: start legofeup-sim with --control-period "
+                               + format_config_number(period));
+    }
+}
+
+comms::UdpLinkOptions link_options(const UdpTarget& target) {
+    comms::UdpLinkOptions options;
+    options.server = target.robot;
+    return options;
 }
 
 }  // namespace
+
+comms::NoiseSettings noise_settings_of(const sim::RobotSpec& robot) {
+    return {robot.wheel_diameter_ratio, robot.wheel_base_ratio, robot.slip_noise, robot.ir_noise};
+}
+
+// The truth receiver subscribes in its constructor, before the reset below, so the truth of
+// time 0 is not missed.
+UdpRobotConnection::UdpRobotConnection(const ResolvedRun& run, const UdpTarget& target)
+    : control_(target.control), truth_(target.truth), link_(link_options(target)) {
+    check_control_period(control_, run, target);
+    control_.set_noise(noise_settings_of(run.robot));
+    link_.connect();
+    control_.reset(run.config.seed, run.true_start);
+    if (!link_.await_reset(2s)) {
+        throw comms::LinkError("the simulator at " + target.robot.to_string()
+                               + " sent no frame after the reset");
+    }
+}
+
+UdpRobotConnection::~UdpRobotConnection() {
+    close();
+}
+
+void UdpRobotConnection::close() {
+    if (link_.connected()) {
+        link_.disconnect();
+    }
+}
 
 UdpTarget parse_udp_target(const std::string& url, int truth_port, int control_port) {
     const auto robot = comms::parse_udp_url(url);
@@ -36,36 +78,12 @@ UdpTarget parse_udp_target(const std::string& url, int truth_port, int control_p
 
 UdpRunReport run_over_udp(const ResolvedRun& run, const UdpTarget& target, RunObserver* observer,
                           const ProgressCallback& progress) {
-    comms::ControlClient control(target.control);
-    const comms::ServerStatus status = control.status();
-    const double period = run.config.simulator.control_period;
-    if (std::abs(status.control_period - period) > 1e-9) {
-        throw comms::LinkError("the simulator at " + target.robot.to_string() + " runs "
-                               + format_config_number(status.control_period)
-                               + " s control periods, the run " + format_config_number(period)
-                               + " s: start legofeup-sim with --control-period "
-                               + format_config_number(period));
-    }
-    // Subscribe before the reset so the truth of time 0 is not missed; the status request
-    // above and the noise request below are answered only after the subscription arrived.
-    comms::TruthReceiver truth(target.truth);
-    control.set_noise(noise_of(run.robot));
-
-    comms::UdpLinkOptions options;
-    options.server = target.robot;
-    comms::UdpSimulatorLink link(options);
-    link.connect();
-    control.reset(run.config.seed, run.true_start);
-    if (!link.await_reset(2s)) {
-        throw comms::LinkError("the simulator at " + target.robot.to_string()
-                               + " sent no frame after the reset");
-    }
-
+    UdpRobotConnection connection(run, target);
     UdpRunReport report;
-    report.result = run_with_link(run, link, truth, observer, progress);
-    link.disconnect();
-    report.server = control.status();
-    report.link = link.counters();
+    report.result = run_with_link(run, connection.link(), connection.truth(), observer, progress);
+    connection.close();
+    report.server = connection.control().status();
+    report.link = connection.link().counters();
     return report;
 }
 

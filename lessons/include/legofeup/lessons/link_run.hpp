@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "legofeup/core/ground_truth.hpp"
+#include "legofeup/core/legofeup_loop.hpp"
 #include "legofeup/core/robot_link.hpp"
 #include "legofeup/core/run_metrics.hpp"
 #include "legofeup/core/truth_source.hpp"
@@ -44,6 +45,39 @@ class LinkSilent : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 inline constexpr int kMaxSilentPeriods = 40;
+
+/// Feeds a loop from a link, one frame at a time, keeping the books of control periods: a
+/// period without a frame (a timeout, or a gap in the sequence) gets a predict-only step; a
+/// frame that does not advance time (a paused simulator) gets none. run_with_link() drives a
+/// whole run with it; the GUI drives an open-ended one, changing the loop between frames.
+class LinkStepper {
+  public:
+    /// Called after every step; returning true ends the advance early (the run is over).
+    using StepHandler = std::function<bool(const LoopSnapshot&)>;
+
+    explicit LinkStepper(double control_period) : period_(control_period) {}
+
+    /// Waits for the link's next frame and steps `loop` for it. Returns true if `on_step`
+    /// asked to stop. Throws LinkSilent after kMaxSilentPeriods periods without a frame.
+    bool advance(LegoFeupLoop& loop, RobotLink& link, const StepHandler& on_step);
+
+    /// Whether the last advance() ran the loop at all (false while paused or before the
+    /// first frame): only then is a wheel command due.
+    bool stepped() const { return stepped_; }
+    std::uint64_t frames_missing() const { return frames_missing_; }
+
+  private:
+    bool step_without_frame(LegoFeupLoop& loop, const StepHandler& on_step);
+
+    double period_;
+    bool have_frame_ = false;
+    std::uint32_t last_sequence_ = 0;
+    double last_time_ = 0.0;
+    std::uint32_t stepped_without_frame_ = 0;  ///< since the last frame
+    int silent_periods_ = 0;
+    bool stepped_ = false;
+    std::uint64_t frames_missing_ = 0;
+};
 
 /// Runs the loop of `run` over `link`. The first frame the link delivers starts the run (it
 /// only sets the encoder reference); the link's control period must be the run's

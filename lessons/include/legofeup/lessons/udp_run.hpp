@@ -4,6 +4,10 @@
 
 #include <string>
 
+#include <memory>
+
+#include "legofeup/comms/control_client.hpp"
+#include "legofeup/comms/truth_receiver.hpp"
 #include "legofeup/comms/udp_link.hpp"
 #include "legofeup/lessons/link_run.hpp"
 
@@ -18,6 +22,34 @@ struct UdpTarget {
 /// Parses "udp://a.b.c.d[:port]"; truth and control default to port+1 and port+2.
 /// Throws InputError naming the --link option for anything else.
 UdpTarget parse_udp_target(const std::string& url, int truth_port, int control_port);
+
+/// The robot of a simulator server, taken for a run: the robot, truth and control streams.
+/// Opening it checks the server runs the run's control period, subscribes to the truth,
+/// gives the server the run's noise, takes the robot and resets it to the run's seed and true
+/// start; the first frame link() delivers is the reset one. Closing (or destroying) it stops
+/// the motors and releases the robot. Throws comms::LinkError with what went wrong and what
+/// to do.
+class UdpRobotConnection {
+  public:
+    UdpRobotConnection(const ResolvedRun& run, const UdpTarget& target);
+    ~UdpRobotConnection();
+    UdpRobotConnection(const UdpRobotConnection&) = delete;
+    UdpRobotConnection& operator=(const UdpRobotConnection&) = delete;
+
+    comms::UdpSimulatorLink& link() { return link_; }
+    comms::TruthReceiver& truth() { return truth_; }
+    comms::ControlClient& control() { return control_; }
+    /// Stops the motors and releases the robot (once).
+    void close();
+
+  private:
+    comms::ControlClient control_;
+    comms::TruthReceiver truth_;
+    comms::UdpSimulatorLink link_;
+};
+
+/// The noise a run asks of the simulated robot, as the control stream sets it.
+comms::NoiseSettings noise_settings_of(const sim::RobotSpec& robot);
 
 struct UdpRunReport {
     RunResult result;
