@@ -1,4 +1,6 @@
 # The session: owns the run (its link and loop on a worker thread) and its history.
 list(APPEND LEGOFEUP_UI_SOURCES
+    session/live_run.cpp
+    session/session.cpp
     session/run_samples.cpp
 )

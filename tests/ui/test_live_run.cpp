@@ -1,0 +1,157 @@
+// The GUI's run on its worker thread, against a simulator server on loopback: it runs, takes
+// changes between steps, drives by hand, pauses, and reports a dead link instead of hanging.
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "legofeup/lessons/experiments.hpp"
+#include "legofeup/simserver/sim_server.hpp"
+#include "legofeup/ui/session/live_run.hpp"
+
+namespace legofeup::ui {
+namespace {
+
+using namespace std::chrono_literals;
+
+/// A server with the run's world, robot and timing, on free loopback ports, 10× real time.
+struct ServedRun {
+    lessons::ResolvedRun run;
+    std::unique_ptr<simserver::SimServer> server;
+    lessons::UdpTarget target;
+
+    explicit ServedRun(const std::string& experiment, double time_scale = 10.0)
+        : run(lessons::resolve(lessons::find_experiment(experiment)->config)) {
+        simserver::SimServerOptions options;
+        options.bind = comms::Endpoint{0x7F000001, 0};
+        options.time_scale = time_scale;
+        server = std::make_unique<simserver::SimServer>(run.world, run.robot, run.config.simulator,
+                                                        1, options);
+        server->start();
+        const simserver::BoundPorts ports = server->ports();
+        target = {options.bind.with_port(ports.robot), options.bind.with_port(ports.truth),
+                  options.bind.with_port(ports.control)};
+    }
+};
+
+/// Collects samples until `done` holds for the collection (or 20 s of wall time pass).
+template <class Done>
+std::vector<RunSample> collect_until(LiveRun& live, std::vector<RunSample>& samples, Done done) {
+    const auto deadline = std::chrono::steady_clock::now() + 20s;
+    while (!done(samples) && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(5ms);
+        for (RunSample& sample : live.take_samples()) {
+            samples.push_back(std::move(sample));
+        }
+    }
+    return samples;
+}
+
+TEST(LiveRun, RunsTheLoopAgainstTheServerWithTruthAndConsecutiveSteps) {
+    ServedRun served("f");
+    std::vector<RunSample> samples;
+    LiveRun live(served.run, served.target, [] {});
+    collect_until(live, samples, [](const auto& s) { return s.size() >= 100; });
+    ASSERT_GE(samples.size(), 100U);
+    EXPECT_EQ(live.status().phase, RunPhase::Running);
+    for (std::size_t i = 1; i < samples.size(); ++i) {
+        EXPECT_EQ(samples[i].snapshot.step, samples[i - 1].snapshot.step + 1);
+    }
+    const RunSample& last = samples.back();
+    ASSERT_TRUE(last.truth.has_value());
+    // Five seconds in, the tuned filter is within a few centimetres of the truth.
+    EXPECT_LT(std::hypot(last.snapshot.estimate.x() - last.truth->pose.x,
+                         last.snapshot.estimate.y() - last.truth->pose.y),
+              0.05);
+    EXPECT_TRUE(std::isfinite(last.nees));
+}
+
+TEST(LiveRun, NotifiesOncePerBatchNotOncePerSample) {
+    ServedRun served("f");
+    std::atomic<int> notifications{0};
+    LiveRun live(served.run, served.target, [&] { ++notifications; });
+    std::this_thread::sleep_for(1s);  // ~200 steps at 10×, none taken
+    const int before = notifications.load();
+    const std::size_t taken = live.take_samples().size();
+    EXPECT_GE(taken, 50U);
+    EXPECT_LE(before, 3);  // the connection, the first batch (and perhaps Running)
+}
+
+TEST(LiveRun, KeyboardDrivingTakesOverFromThePathAndMovesTheRobotAtTheCommandedSpeed) {
+    ServedRun served("f");
+    std::vector<RunSample> samples;
+    LiveRun live(served.run, served.target, [] {});
+    live.set_manual_driving(true);
+    live.set_manual_command({0.0, 0.5});  // turn on the spot
+    collect_until(live, samples, [](const auto& s) { return s.size() >= 60; });
+    ASSERT_GE(samples.size(), 60U);
+    const RunSample& last = samples.back();
+    EXPECT_NEAR(last.snapshot.velocity.v, 0.0, 1e-12);
+    EXPECT_NEAR(last.snapshot.velocity.w, 0.5, 1e-12);
+    ASSERT_TRUE(last.truth.has_value());
+    EXPECT_NEAR(last.truth->velocity.w, 0.5, 0.1);  // the simulated robot really turns
+    EXPECT_LT(std::abs(last.truth->velocity.v), 0.02);
+}
+
+TEST(LiveRun, ANewConfigurationTakesEffectAtTheNextStep) {
+    ServedRun served("f");
+    std::vector<RunSample> samples;
+    LiveRun live(served.run, served.target, [] {});
+    collect_until(live, samples, [](const auto& s) { return s.size() >= 20; });
+    lessons::RunConfig config = served.run.config;
+    config.motion.v_ref = 0.05;
+    live.reconfigure(lessons::resolve(config));
+    const std::size_t changed_at = samples.size();
+    collect_until(live, samples, [&](const auto& s) { return s.size() >= changed_at + 40; });
+    ASSERT_GE(samples.size(), changed_at + 40);
+    EXPECT_GT(samples[changed_at - 1].snapshot.velocity.v, 0.09);  // V_ref = 0.1 m/s before
+    EXPECT_LE(samples.back().snapshot.velocity.v, 0.05 + 1e-12);
+}
+
+TEST(LiveRun, PauseFreezesSimulatedTimeAndResumeContinues) {
+    ServedRun served("f");
+    std::vector<RunSample> samples;
+    LiveRun live(served.run, served.target, [] {});
+    collect_until(live, samples, [](const auto& s) { return s.size() >= 20; });
+    live.set_paused(true);
+    std::this_thread::sleep_for(300ms);
+    for (RunSample& sample : live.take_samples()) {
+        samples.push_back(std::move(sample));
+    }
+    EXPECT_EQ(live.status().phase, RunPhase::Paused);
+    const std::size_t paused_count = samples.size();
+    std::this_thread::sleep_for(300ms);
+    EXPECT_TRUE(live.take_samples().empty());  // no steps while paused
+    live.set_paused(false);
+    collect_until(live, samples, [&](const auto& s) { return s.size() >= paused_count + 20; });
+    EXPECT_EQ(live.status().phase, RunPhase::Running);
+    EXPECT_GE(samples.size(), paused_count + 20);
+}
+
+TEST(LiveRun, ANoServerAddressFailsWithAMessageInsteadOfHanging) {
+    const lessons::ResolvedRun run = lessons::resolve(lessons::find_experiment("f")->config);
+    // A port nobody serves on (the server picks free ports; this one was just released).
+    std::uint16_t port = 0;
+    {
+        ServedRun served("f");
+        port = served.server->ports().robot;
+    }
+    const comms::Endpoint nowhere{0x7F000001, port};
+    LiveRun live(run,
+                 {nowhere, nowhere.with_port(static_cast<std::uint16_t>(port + 1)),
+                  nowhere.with_port(static_cast<std::uint16_t>(port + 2))},
+                 [] {});
+    const auto deadline = std::chrono::steady_clock::now() + 10s;
+    while (live.status().phase == RunPhase::Connecting
+           && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(20ms);
+    }
+    const LiveRunStatus status = live.status();
+    EXPECT_EQ(status.phase, RunPhase::Failed);
+    EXPECT_NE(status.message.find("no reply"), std::string::npos) << status.message;
+}
+
+}  // namespace
+}  // namespace legofeup::ui

@@ -1,0 +1,142 @@
+#pragma once
+// The session owns what the window shows: the configuration, the link choice, the running
+// experiment (a LiveRun on its worker thread, and the embedded simulator on its own) and the
+// run's history. Widgets receive it through their constructor; they read from it and ask it
+// for changes, and it tells them what changed through signals.
+//
+// Threading: every method runs on the GUI thread and returns at once. The worker hands
+// samples over in batches; the session takes them at most once per display frame (~60 Hz)
+// and emits one samplesAppended() per batch, so the views repaint once per frame however
+// fast the simulator runs, and a frame the GUI could not keep up with is merged into the
+// next one, never queued.
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QStringList>
+#include <QTimer>
+#include <atomic>
+#include <fstream>
+#include <future>
+#include <memory>
+
+#include "legofeup/lessons/config_schema.hpp"
+#include "legofeup/lessons/run_config.hpp"
+#include "legofeup/lessons/trace_csv.hpp"
+#include "legofeup/ui/run_history.hpp"
+#include "legofeup/ui/session/live_run.hpp"
+
+namespace legofeup::simserver {
+class SimServer;
+}
+
+namespace legofeup::ui {
+
+/// Where the robot is: the simulator inside the application, a legofeup-sim elsewhere, or
+/// the real NXT (not available yet).
+enum class LinkKind : std::uint8_t { Embedded, External, Nxt };
+
+struct LinkChoice {
+    LinkKind kind = LinkKind::Embedded;
+    QString address = QStringLiteral("udp://127.0.0.1:5600");  ///< External: the robot port
+    double speed = 1.0;  ///< Embedded: simulated seconds per real second
+};
+
+class Session : public QObject {
+    Q_OBJECT
+
+  public:
+    /// Starts with `config` (normally experiment f), resolved; throws InputError if it is not
+    /// valid.
+    explicit Session(const lessons::RunConfig& config, QObject* parent = nullptr);
+    ~Session() override;
+
+    const RunHistory& history() const { return history_; }
+    const lessons::RunConfig& config() const { return config_; }
+    const lessons::ResolvedRun& resolved() const { return resolved_; }
+    RunPhase phase() const { return phase_; }
+    /// The run's status as last reported (steps, time, frames missing, failure message).
+    const LiveRunStatus& status() const { return status_; }
+    const LinkChoice& linkChoice() const { return link_; }
+    bool manualDriving() const { return manual_; }
+    bool running() const;  ///< a run exists and is not over (Connecting, Running, Paused)
+
+    /// Replaces the whole configuration (an experiment preset, a loaded file). Returns every
+    /// problem, one per line; nothing changes unless the list is empty.
+    QStringList setConfig(const lessons::RunConfig& config);
+    /// Changes one setting (the configuration panel). Returns why it was refused, or an empty
+    /// string when it was applied — live if a run is going (see applies_live()).
+    QString changeSetting(const lessons::Setting& setting, const lessons::SettingValue& value);
+    /// Takes effect at the next start.
+    void setLinkChoice(const LinkChoice& choice);
+
+    /// Writes the configuration as TOML (the CLI reads the same file). Returns an error or "".
+    QString saveConfig(const QString& path) const;
+    /// Reads a TOML configuration (over the defaults). Returns the problems (file:line).
+    QStringList loadConfig(const QString& path);
+    /// Writes the whole history as trace.csv (the CLI's format). Returns an error or "".
+    QString exportTrace(const QString& path) const;
+    /// Records the coming run(s) into `directory`: config.toml now, trace.csv as it runs
+    /// (flushed every frame, so a crash keeps what was recorded). "" to stop recording.
+    /// Returns an error or "".
+    QString setRecordingDirectory(const QString& directory);
+    const QString& recordingDirectory() const { return recording_directory_; }
+
+  public slots:
+    /// Starts a new run (from a clean history), or resumes a paused one.
+    void start();
+    /// Stops the run: the motors stop and the robot is released; the history stays.
+    void stop();
+    /// Stops any run and returns to the start: empty history, initial pose.
+    void reset();
+    void setPaused(bool paused);
+    /// Keyboard driving on (the path controller off) or off.
+    void setManualDriving(bool manual);
+    /// The keyboard's command: forward speed (m/s) and turn rate (rad/s).
+    void setManualCommand(double speed, double turn_rate);
+
+  signals:
+    void historyRestarted();
+    void samplesAppended(int first, int count);
+    void phaseChanged(legofeup::ui::RunPhase phase);
+    void configChanged();
+    void manualDrivingChanged(bool manual);
+    /// Something the user should read (a failed link, a refused file).
+    void problem(const QString& message);
+
+  private:
+    void workerNotified();  // any thread
+    void drain();           // GUI thread
+    void restartHistory();
+    void retireRun();
+    std::optional<lessons::UdpTarget> prepareTarget();
+    void openTrace();
+
+    lessons::RunConfig config_;
+    lessons::ResolvedRun resolved_;
+    LinkChoice link_;
+    bool manual_ = false;
+    RunPhase phase_ = RunPhase::Idle;
+    LiveRunStatus status_;
+    RunHistory history_;
+
+    std::unique_ptr<simserver::SimServer> embedded_;
+    std::unique_ptr<LiveRun> run_;
+    std::vector<std::future<void>> reapers_;  ///< retired runs being stopped and joined
+
+    std::atomic<bool> drain_queued_{false};
+    QTimer drain_timer_;
+    QElapsedTimer since_drain_;
+
+    QString recording_directory_;
+    std::unique_ptr<std::ofstream> trace_file_;
+    std::unique_ptr<lessons::TraceCsvWriter> trace_writer_;
+};
+
+/// Whether a setting takes effect while the robot runs (else at the next start or reset).
+bool applies_live(const lessons::Setting& setting);
+
+/// A phase as the status bar words it.
+QString phase_text(RunPhase phase);
+
+}  // namespace legofeup::ui

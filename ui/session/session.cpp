@@ -1,0 +1,381 @@
+#include "legofeup/ui/session/session.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QSaveFile>
+#include <algorithm>
+#include <array>
+#include <sstream>
+#include <string_view>
+
+#include "legofeup/comms/endpoint.hpp"
+#include "legofeup/lessons/config_file.hpp"
+#include "legofeup/lessons/input_error.hpp"
+#include "legofeup/simserver/sim_server.hpp"
+#include "legofeup/ui/session/run_samples.hpp"
+
+namespace legofeup::ui {
+namespace {
+
+using namespace std::chrono_literals;
+
+constexpr int kFrameMilliseconds = 16;  // drain at most once per 60 Hz display frame
+
+QStringList problem_lines(const lessons::InputError& error) {
+    QStringList lines;
+    for (const lessons::InputProblem& problem : error.problems()) {
+        lines << QString::fromStdString(problem.message());
+    }
+    return lines;
+}
+
+bool starts_with_any(const std::string& key, std::initializer_list<std::string_view> prefixes) {
+    return std::any_of(prefixes.begin(), prefixes.end(),
+                       [&](std::string_view prefix) { return key.starts_with(prefix); });
+}
+
+}  // namespace
+
+bool applies_live(const lessons::Setting& setting) {
+    const std::string& key = setting.key;
+    // The routine's shape and the run's length, the world, the seed and the starting belief
+    // belong to a run's beginning; the simulated robot's body and timing to the simulator's.
+    if (starts_with_any(key,
+                        {"control.routine", "control.line_", "control.circle_", "control.goto_"})) {
+        return false;
+    }
+    if (starts_with_any(key, {"filter.", "control.", "robot.", "ir_curve.", "association."})) {
+        return true;
+    }
+    static constexpr std::array kLiveNoise = {"simulator.wheel_diameter_ratio",
+                                              "simulator.wheel_base_ratio", "simulator.slip_noise",
+                                              "simulator.ir_noise"};
+    return std::find(kLiveNoise.begin(), kLiveNoise.end(), key) != kLiveNoise.end();
+}
+
+QString phase_text(RunPhase phase) {
+    switch (phase) {
+        case RunPhase::Idle:
+            return QObject::tr("Ready");
+        case RunPhase::Connecting:
+            return QObject::tr("Connecting…");
+        case RunPhase::Running:
+            return QObject::tr("Running");
+        case RunPhase::Paused:
+            return QObject::tr("Paused");
+        case RunPhase::Finished:
+            return QObject::tr("Finished");
+        case RunPhase::Stopped:
+            return QObject::tr("Stopped");
+        case RunPhase::Failed:
+            return QObject::tr("Link failed");
+    }
+    return {};
+}
+
+Session::Session(const lessons::RunConfig& config, QObject* parent)
+    : QObject(parent), config_(config), resolved_(lessons::resolve(config)) {
+    drain_timer_.setSingleShot(true);
+    connect(&drain_timer_, &QTimer::timeout, this, &Session::drain);
+    since_drain_.start();
+    history_.restart(scene_of(resolved_));
+}
+
+Session::~Session() {
+    run_.reset();      // joins the worker, which may still notify us until then
+    reapers_.clear();  // and the retired ones
+    embedded_.reset();
+}
+
+bool Session::running() const {
+    return phase_ == RunPhase::Connecting || phase_ == RunPhase::Running
+           || phase_ == RunPhase::Paused;
+}
+
+QStringList Session::setConfig(const lessons::RunConfig& config) {
+    try {
+        lessons::ResolvedRun resolved = lessons::resolve(config);
+        config_ = config;
+        resolved_ = std::move(resolved);
+    } catch (const lessons::InputError& error) {
+        return problem_lines(error);
+    }
+    if (run_ && running()) {
+        run_->reconfigure(resolved_);
+    } else {
+        history_.restart(scene_of(resolved_));
+        emit historyRestarted();
+    }
+    emit configChanged();
+    return {};
+}
+
+QString Session::changeSetting(const lessons::Setting& setting,
+                               const lessons::SettingValue& value) {
+    lessons::RunConfig changed = config_;
+    try {
+        setting.set(changed, value);
+    } catch (const std::exception& error) {
+        return QString::fromStdString(setting.key + ": " + error.what());
+    }
+    changed.origins[setting.field] = {"the configuration panel", 0, setting.key};
+    const QStringList problems = setConfig(changed);
+    return problems.join('\n');
+}
+
+void Session::setLinkChoice(const LinkChoice& choice) {
+    link_ = choice;
+}
+
+QString Session::saveConfig(const QString& path) const {
+    QSaveFile file(path);
+    const std::string text = lessons::config_to_toml(config_, "LegoFeup Lab configuration");
+    if (!file.open(QIODevice::WriteOnly)
+        || file.write(text.data(), static_cast<qint64>(text.size()))
+               != static_cast<qint64>(text.size())
+        || !file.commit()) {
+        return tr("Cannot write %1: %2").arg(path, file.errorString());
+    }
+    return {};
+}
+
+QStringList Session::loadConfig(const QString& path) {
+    try {
+        return setConfig(lessons::load_config_file(path.toStdString(), lessons::RunConfig{}));
+    } catch (const lessons::InputError& error) {
+        return problem_lines(error);
+    }
+}
+
+QString Session::exportTrace(const QString& path) const {
+    std::ostringstream text;
+    lessons::TraceCsvWriter writer(text, resolved_.loop);
+    for (const RunSample& sample : history_.samples()) {
+        if (sample.truth) {
+            writer.on_step(sample.snapshot, *sample.truth);
+        }
+    }
+    QSaveFile file(path);
+    const std::string csv = text.str();
+    if (!file.open(QIODevice::WriteOnly)
+        || file.write(csv.data(), static_cast<qint64>(csv.size()))
+               != static_cast<qint64>(csv.size())
+        || !file.commit()) {
+        return tr("Cannot write %1: %2").arg(path, file.errorString());
+    }
+    return {};
+}
+
+QString Session::setRecordingDirectory(const QString& directory) {
+    trace_writer_.reset();
+    trace_file_.reset();
+    recording_directory_.clear();
+    if (directory.isEmpty()) {
+        return {};
+    }
+    if (!QDir().mkpath(directory) || !QFileInfo(directory).isWritable()) {
+        return tr("Cannot record into %1: the folder cannot be created or written").arg(directory);
+    }
+    recording_directory_ = directory;
+    if (const QString error = saveConfig(QDir(directory).filePath("config.toml"));
+        !error.isEmpty()) {
+        recording_directory_.clear();
+        return error;
+    }
+    if (running()) {
+        openTrace();
+    }
+    return {};
+}
+
+void Session::openTrace() {
+    trace_writer_.reset();
+    trace_file_.reset();
+    if (recording_directory_.isEmpty()) {
+        return;
+    }
+    // A new run starts a new file; an earlier recording is kept under its own name.
+    const QDir directory(recording_directory_);
+    QString name = QStringLiteral("trace.csv");
+    for (int n = 2; directory.exists(name); ++n) {
+        name = QStringLiteral("trace-%1.csv").arg(n);
+    }
+    trace_file_ =
+        std::make_unique<std::ofstream>(directory.filePath(name).toStdString(), std::ios::binary);
+    if (!*trace_file_) {
+        trace_file_.reset();
+        emit problem(tr("Cannot record into %1").arg(directory.filePath(name)));
+        return;
+    }
+    trace_writer_ = std::make_unique<lessons::TraceCsvWriter>(*trace_file_, resolved_.loop);
+    trace_file_->flush();
+}
+
+void Session::restartHistory() {
+    history_.restart(scene_of(resolved_));
+    emit historyRestarted();
+}
+
+std::optional<lessons::UdpTarget> Session::prepareTarget() {
+    if (link_.kind == LinkKind::External) {
+        try {
+            return lessons::parse_udp_target(link_.address.toStdString(), 0, 0);
+        } catch (const lessons::InputError& error) {
+            emit problem(problem_lines(error).join('\n'));
+            return std::nullopt;
+        }
+    }
+    if (link_.kind == LinkKind::Nxt) {
+        emit problem(tr("The NXT link is not available in this version."));
+        return std::nullopt;
+    }
+    // The embedded simulator: a fresh server per run, on free loopback ports, so it always
+    // has this run's world, robot and timing.
+    embedded_.reset();
+    simserver::SimServerOptions options;
+    options.bind = comms::Endpoint{0x7F000001, 0};
+    options.time_scale = link_.speed;
+    try {
+        embedded_ = std::make_unique<simserver::SimServer>(resolved_.world, resolved_.robot,
+                                                           resolved_.config.simulator,
+                                                           resolved_.config.seed, options);
+    } catch (const std::exception& error) {
+        emit problem(tr("The embedded simulator did not start: %1").arg(error.what()));
+        return std::nullopt;
+    }
+    embedded_->start();
+    const simserver::BoundPorts ports = embedded_->ports();
+    return lessons::UdpTarget{options.bind.with_port(ports.robot),
+                              options.bind.with_port(ports.truth),
+                              options.bind.with_port(ports.control)};
+}
+
+void Session::retireRun() {
+    if (!run_) {
+        return;
+    }
+    drain();  // what the worker produced so far belongs to this run's history
+    // The worker may be waiting on a socket for up to a control period (or a connection
+    // timeout): it stops and is joined on a thread of its own, never on the GUI thread.
+    run_->request_stop();
+    std::erase_if(reapers_, [](const std::future<void>& reaper) {
+        return reaper.wait_for(0s) == std::future_status::ready;
+    });
+    reapers_.push_back(
+        std::async(std::launch::async, [run = std::move(run_)]() mutable { run.reset(); }));
+}
+
+void Session::start() {
+    if (run_ && phase_ == RunPhase::Paused) {
+        setPaused(false);
+        return;
+    }
+    retireRun();
+    const std::optional<lessons::UdpTarget> target = prepareTarget();
+    if (!target) {
+        return;
+    }
+    restartHistory();
+    status_ = {};
+    phase_ = RunPhase::Connecting;
+    emit phaseChanged(phase_);
+    run_ = std::make_unique<LiveRun>(resolved_, *target, [this] { workerNotified(); });
+    if (manual_) {
+        run_->set_manual_driving(true);
+    }
+    openTrace();
+}
+
+void Session::stop() {
+    if (run_ && running()) {
+        run_->request_stop();  // the worker reports Stopped when it has let go of the robot
+    }
+}
+
+void Session::reset() {
+    retireRun();
+    embedded_.reset();
+    trace_writer_.reset();
+    trace_file_.reset();
+    status_ = {};
+    phase_ = RunPhase::Idle;
+    restartHistory();
+    emit phaseChanged(phase_);
+}
+
+void Session::setPaused(bool paused) {
+    if (run_ && running()) {
+        run_->set_paused(paused);
+    }
+}
+
+void Session::setManualDriving(bool manual) {
+    if (manual == manual_) {
+        return;
+    }
+    manual_ = manual;
+    if (run_) {
+        run_->set_manual_driving(manual);
+        if (!manual) {
+            run_->set_manual_command({});
+        }
+    }
+    emit manualDrivingChanged(manual);
+}
+
+void Session::setManualCommand(double speed, double turn_rate) {
+    if (run_) {
+        run_->set_manual_command({speed, turn_rate});
+    }
+}
+
+void Session::workerNotified() {
+    if (!drain_queued_.exchange(true)) {
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                // At most one drain per display frame: wait out the rest of this one.
+                const qint64 elapsed = since_drain_.elapsed();
+                if (elapsed >= kFrameMilliseconds) {
+                    drain();
+                } else if (!drain_timer_.isActive()) {
+                    drain_timer_.start(static_cast<int>(kFrameMilliseconds - elapsed));
+                }
+            },
+            Qt::QueuedConnection);
+    }
+}
+
+void Session::drain() {
+    drain_queued_ = false;
+    since_drain_.restart();
+    if (!run_) {
+        return;
+    }
+    std::vector<RunSample> batch = run_->take_samples();
+    const LiveRunStatus status = run_->status();
+    if (!batch.empty()) {
+        if (trace_writer_) {
+            for (const RunSample& sample : batch) {
+                if (sample.truth) {
+                    trace_writer_->on_step(sample.snapshot, *sample.truth);
+                }
+            }
+            trace_file_->flush();
+        }
+        const int first = static_cast<int>(history_.samples().size());
+        const int count = static_cast<int>(batch.size());
+        history_.append(std::move(batch));
+        emit samplesAppended(first, count);
+    }
+    status_ = status;
+    if (status.phase != phase_) {
+        phase_ = status.phase;
+        if (phase_ == RunPhase::Failed) {
+            emit problem(tr("The link failed: %1").arg(QString::fromStdString(status.message)));
+        }
+        emit phaseChanged(phase_);
+    }
+}
+
+}  // namespace legofeup::ui
