@@ -1,1 +1,106 @@
-// Arena view frame-time benchmarks (filled in with the arena view).
+// Arena view frame times at 1200×900 with a long history: a whole paint (fitted, and
+// following the robot zoomed in), and one new sample taken in and painted.
+//
+// The argument is the number of laps of experiment f. A lap takes 84 s (≈1,680 samples at
+// 20 Hz): 9 laps ≈ 15,300 samples, 22 laps ≈ 37,500 samples ≈ a 30-minute run.
+
+#include <benchmark/benchmark.h>
+
+#include <QImage>
+#include <QPainter>
+#include <map>
+#include <vector>
+
+#include "legofeup/ui/arena/arena_view.hpp"
+#include "support/lockstep_history.hpp"
+
+namespace {
+
+using legofeup::ui::ArenaView;
+using legofeup::ui::RunHistory;
+using legofeup::ui::RunSample;
+
+const RunHistory& history_of(int laps) {
+    static std::map<int, RunHistory> histories;
+    auto found = histories.find(laps);
+    if (found == histories.end()) {
+        found = histories.emplace(laps, legofeup::ui::testing::lockstep_history("f", laps)).first;
+    }
+    return found->second;
+}
+
+void paint(ArenaView& view, QImage& image) {
+    QPainter painter(&image);
+    view.render(&painter);
+}
+
+/// One paint of the whole view, fitted to the arena.
+void BM_ArenaPaint(benchmark::State& state) {
+    const RunHistory& history = history_of(static_cast<int>(state.range(0)));
+    ArenaView view(history);
+    view.resize(1200, 900);
+    view.fitArena();
+    QImage image(1200, 900, QImage::Format_ARGB32_Premultiplied);
+    paint(view, image);  // the first paint simplifies the paths for this zoom
+    for (auto _ : state) {
+        paint(view, image);
+        benchmark::DoNotOptimize(image.constBits());
+    }
+    state.counters["samples"] = static_cast<double>(history.samples().size());
+}
+BENCHMARK(BM_ArenaPaint)->Arg(9)->Arg(22)->Unit(benchmark::kMillisecond);
+
+/// The same while following the robot, zoomed in twice (only the centre moves between
+/// frames, so the simplified paths are reused).
+void BM_ArenaPaintFollowing(benchmark::State& state) {
+    const RunHistory& history = history_of(static_cast<int>(state.range(0)));
+    ArenaView view(history);
+    view.resize(1200, 900);
+    view.setFollowRobot(true);
+    view.zoomIn();
+    view.zoomIn();
+    QImage image(1200, 900, QImage::Format_ARGB32_Premultiplied);
+    paint(view, image);
+    for (auto _ : state) {
+        paint(view, image);
+        benchmark::DoNotOptimize(image.constBits());
+    }
+}
+BENCHMARK(BM_ArenaPaintFollowing)->Arg(9)->Arg(22)->Unit(benchmark::kMillisecond);
+
+/// A run at 20 Hz: one sample arrives, the view takes it in and paints.
+void BM_ArenaAppendOneSampleAndPaint(benchmark::State& state) {
+    const RunHistory& full = history_of(static_cast<int>(state.range(0)));
+    const std::vector<RunSample>& all = full.samples();
+    const std::size_t start = all.size() - 1000;  // the last 1,000 samples arrive one by one
+    RunHistory history;
+    const auto reset = [&] {
+        history.restart(full.scene());
+        history.append(std::vector<RunSample>(all.begin(), all.begin() + std::ptrdiff_t(start)));
+    };
+    reset();
+    ArenaView view(history);
+    view.resize(1200, 900);
+    view.fitArena();
+    QImage image(1200, 900, QImage::Format_ARGB32_Premultiplied);
+    paint(view, image);
+    std::size_t next = start;
+    for (auto _ : state) {
+        if (next == all.size()) {
+            state.PauseTiming();
+            reset();
+            view.historyRestarted();
+            paint(view, image);
+            next = start;
+            state.ResumeTiming();
+        }
+        history.append(std::vector<RunSample>{all[next]});
+        view.samplesAppended(static_cast<int>(next), 1);
+        ++next;
+        paint(view, image);
+        benchmark::DoNotOptimize(image.constBits());
+    }
+}
+BENCHMARK(BM_ArenaAppendOneSampleAndPaint)->Arg(9)->Arg(22)->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -1,0 +1,173 @@
+#include "legofeup/ui/arena/arena_cache.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <variant>
+
+#include "legofeup/core/angles.hpp"
+
+namespace legofeup::ui {
+
+namespace {
+
+QPointF to_point(const Vector2& v) {
+    return {v.x(), v.y()};
+}
+
+}  // namespace
+
+void WorldBounds::add(const QPointF& point) {
+    if (!std::isfinite(point.x()) || !std::isfinite(point.y())) {
+        return;
+    }
+    min_x_ = std::min(min_x_, point.x());
+    min_y_ = std::min(min_y_, point.y());
+    max_x_ = std::max(max_x_, point.x());
+    max_y_ = std::max(max_y_, point.y());
+}
+
+CovarianceEllipse sample_ellipse(const RunSample& sample, EllipseConfidence level) {
+    const StateVector& x = sample.snapshot.estimate;
+    const Eigen::Matrix2d position_block = sample.snapshot.covariance.block<2, 2>(kX, kX);
+    return covariance_ellipse(Vector2(x(kX), x(kY)), position_block, level);
+}
+
+QPolygonF ellipse_qpolygon(const CovarianceEllipse& ellipse, int count) {
+    QPolygonF polygon;
+    const std::vector<Vector2> points = ellipse_polygon(ellipse, count);
+    polygon.reserve(static_cast<qsizetype>(points.size()) + 1);
+    for (const Vector2& p : points) {
+        polygon.append(to_point(p));
+    }
+    if (!polygon.isEmpty()) {
+        polygon.append(polygon.front());
+    }
+    return polygon;
+}
+
+QPainterPath intended_painter_path(const std::vector<PathSegment>& path, const Vector2& start) {
+    QPainterPath painter_path;
+    Vector2 cursor = start;
+    bool first = true;
+    for (const PathSegment& segment : path) {
+        if (const auto* line = std::get_if<LineSegment>(&segment)) {
+            if (first || (line->from - cursor).norm() > 1e-9) {
+                painter_path.moveTo(to_point(line->from));
+            }
+            painter_path.lineTo(to_point(line->to));
+            cursor = line->to;
+        } else if (const auto* arc = std::get_if<ArcSegment>(&segment)) {
+            // The arc starts at the centre's bearing of where the robot begins it.
+            const Vector2 offset = cursor - arc->centre;
+            const double start_angle =
+                offset.squaredNorm() > 0.0 ? std::atan2(offset.y(), offset.x()) : 0.0;
+            const double sweep = arc->sweep > 0.0 ? arc->sweep : 2.0 * kPi;
+            const double direction = arc->counter_clockwise ? 1.0 : -1.0;
+            const int steps = std::max(8, static_cast<int>(std::ceil(sweep / (kPi / 48.0))));
+            for (int i = 0; i <= steps; ++i) {
+                const double angle = start_angle + direction * sweep * i / steps;
+                const QPointF point(arc->centre.x() + arc->radius * std::cos(angle),
+                                    arc->centre.y() + arc->radius * std::sin(angle));
+                if (i == 0) {
+                    painter_path.moveTo(point);
+                } else {
+                    painter_path.lineTo(point);
+                }
+            }
+            const double end_angle = start_angle + direction * sweep;
+            cursor = arc->centre + arc->radius * Vector2(std::cos(end_angle), std::sin(end_angle));
+        }
+        first = false;
+    }
+    return painter_path;
+}
+
+void ArenaCache::build_scene(const RunHistory& history) {
+    const ArenaScene& scene = history.scene();
+    Vector2 start = Vector2::Zero();
+    if (!history.empty()) {
+        const StateVector& x = history.samples().front().snapshot.estimate;
+        start = Vector2(x(kX), x(kY));
+    } else if (!scene.path.empty()) {
+        if (const auto* line = std::get_if<LineSegment>(&scene.path.back())) {
+            start = line->to;  // a closed path starts where it ends
+        }
+    }
+    intended_ = intended_painter_path(scene.path, start);
+    scene_bounds_ = WorldBounds();
+    if (!intended_.isEmpty()) {
+        const QRectF box = intended_.boundingRect();
+        scene_bounds_.add(box.topLeft());
+        scene_bounds_.add(box.bottomRight());
+    }
+    for (const Wall& wall : scene.walls) {
+        scene_bounds_.add(to_point(wall.start));
+        scene_bounds_.add(to_point(wall.end));
+    }
+}
+
+void ArenaCache::rebuild(const RunHistory& history, EllipseConfidence level) {
+    epoch_ = history.epoch();
+    seen_ = 0;
+    truth_.clear();
+    estimate_.clear();
+    odometry_.clear();
+    trail_.clear();
+    trail_path_.clear();
+    data_bounds_ = WorldBounds();
+    next_trail_time_ = -std::numeric_limits<double>::infinity();
+    build_scene(history);
+    update(history, level);
+}
+
+void ArenaCache::update(const RunHistory& history, EllipseConfidence level) {
+    if (history.epoch() != epoch_ || history.samples().size() < seen_) {
+        rebuild(history, level);
+        return;
+    }
+    const std::vector<RunSample>& samples = history.samples();
+    if (seen_ == 0 && !samples.empty()) {
+        build_scene(history);  // arcs start where the robot starts
+    }
+    for (std::size_t i = seen_; i < samples.size(); ++i) {
+        take_sample(samples[i], i, level);
+    }
+    seen_ = samples.size();
+}
+
+void ArenaCache::take_sample(const RunSample& sample, std::size_t index, EllipseConfidence level) {
+    const LoopSnapshot& snapshot = sample.snapshot;
+    const QPointF estimate(snapshot.estimate(kX), snapshot.estimate(kY));
+    estimate_.append(estimate);
+    odometry_.append({snapshot.odometry_pose.x, snapshot.odometry_pose.y});
+    data_bounds_.add(estimate);
+    if (sample.truth) {
+        truth_.append({sample.truth->pose.x, sample.truth->pose.y});
+    }
+    if (snapshot.time >= next_trail_time_) {
+        next_trail_time_ = snapshot.time + kTrailPeriod;
+        const CovarianceEllipse ellipse = sample_ellipse(sample, level);
+        if (ellipse.valid) {
+            TrailEllipse trail{index, ellipse_qpolygon(ellipse, kTrailPoints)};
+            trail_path_.addPolygon(trail.polygon);
+            trail_.push_back(std::move(trail));
+        }
+    }
+}
+
+void ArenaCache::set_confidence(const RunHistory& history, EllipseConfidence level) {
+    const std::vector<RunSample>& samples = history.samples();
+    trail_path_.clear();
+    for (TrailEllipse& trail : trail_) {
+        if (trail.sample >= samples.size()) {
+            continue;
+        }
+        const CovarianceEllipse ellipse = sample_ellipse(samples[trail.sample], level);
+        trail.polygon = ellipse_qpolygon(ellipse, kTrailPoints);
+        trail_path_.addPolygon(trail.polygon);
+    }
+}
+
+}  // namespace legofeup::ui

@@ -1,0 +1,89 @@
+#pragma once
+// The arena view's drawing, one layer per call. World layers are drawn through the
+// world → widget transform with cosmetic pens (widths in device-independent pixels, so lines
+// stay thin at any zoom and any device pixel ratio); text and overlays are drawn in widget
+// pixels so they are never mirrored or scaled by the zoom.
+
+#include <QFont>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPolygonF>
+#include <QString>
+#include <QTransform>
+#include <vector>
+
+#include "legofeup/core/loop_snapshot.hpp"
+#include "legofeup/core/walls.hpp"
+#include "legofeup/ui/arena/arena_cache.hpp"
+#include "legofeup/ui/arena/arena_colors.hpp"
+#include "legofeup/ui/arena/covariance_ellipse.hpp"
+
+namespace legofeup::ui {
+
+struct ArenaStyle {
+    ArenaColors colors;
+    QFont font;               ///< labels, already scaled by the text scale
+    QFont legend_font;        ///< the legend (grows more slowly than the labels)
+    double line_scale = 1.0;  ///< multiplies every line width (projector mode)
+};
+
+/// The robot's footprint for drawing (the LEGO NXT robot of the paper), metres.
+struct RobotOutline {
+    static constexpr double kAhead = 0.106;  ///< chassis ahead of the axle
+    static constexpr double kLength = 0.21;  ///< whole chassis
+    static constexpr double kWidth = 0.16;   ///< including the wheels
+    static constexpr double kWheelRadius = 0.028;
+};
+
+/// One line of the legend: a swatch (line, dashed line or filled box) and its text.
+struct LegendEntry {
+    enum class Swatch { Line, Dashed, Ellipse, Band };
+    Swatch swatch = Swatch::Line;
+    QColor color;
+    QString text;
+};
+
+class ArenaPainter {
+  public:
+    ArenaPainter(QPainter& painter, const QTransform& world_to_widget, const ArenaStyle& style);
+
+    // World layers.
+    void grid(const QRectF& visible_world, double spacing);
+    void intended_path(const QPainterPath& path);
+    void walls(const std::vector<Wall>& walls, int highlighted);
+    /// The trail of past ellipses, all in one path.
+    void trail(const QPainterPath& trail);
+    void polyline(const QPolygonF& points, const QColor& color, double width);
+    /// The chassis outline with its heading; `ghost` draws it faint and dashed.
+    void robot(const Pose2& pose, const IrMount& mount, const QColor& color, bool ghost);
+    void ir_rays(const LoopSnapshot& snapshot, const IrMount& mount, double max_range);
+    void ellipse(const CovarianceEllipse& ellipse);
+    /// The estimate: a dot and an arrow along its heading.
+    void estimate_marker(const Pose2& pose);
+
+    // Widget-pixel layers.
+    void wall_names(const std::vector<Wall>& walls, const QRectF& arena);
+    /// A text in a box whose bottom-left corner is at `anchor` (kept inside the widget).
+    void label(const QPointF& anchor, const QString& text, const QColor& color);
+    void legend(const std::vector<LegendEntry>& entries, const QRectF& widget);
+    void scale_bar(double pixels_per_metre, const QRectF& widget);
+    void corner_text(const QString& text, const QRectF& widget, Qt::Alignment corner);
+    void centred_text(const QString& text, const QRectF& widget);
+
+  private:
+    QPen pen(const QColor& color, double width, Qt::PenStyle style = Qt::SolidLine) const;
+    void use_world();
+    void use_widget();
+
+    QPainter& painter_;
+    QTransform world_to_widget_;
+    const ArenaStyle& style_;
+};
+
+/// The legend's box for these entries (texts may hold line breaks).
+QSizeF legend_size(const std::vector<LegendEntry>& entries, const QFont& font);
+
+/// A "nice" scale-bar length (1, 2 or 5 × 10ⁿ metres) close to `target_pixels` long.
+double scale_bar_length(double pixels_per_metre, double target_pixels);
+
+}  // namespace legofeup::ui
