@@ -30,4 +30,10 @@ inline RunHistory lockstep_history(const std::string& id, int laps) {
     return history;
 }
 
+/// One lap of experiment f, run once per test program and shared by its tests.
+inline const RunHistory& one_lap() {
+    static const RunHistory history = lockstep_history("f", 1);
+    return history;
+}
+
 }  // namespace legofeup::ui::testing

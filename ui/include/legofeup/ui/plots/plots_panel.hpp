@@ -1,0 +1,129 @@
+#pragma once
+// The plots panel: one QCustomPlot per PlotKind (plot_series.hpp), time in seconds on x,
+// grouped in tabs of two or three plots stacked in a splitter.
+//
+// It follows the RunHistory incrementally: samplesAppended adds only the new samples' points
+// and queues one replot per visible plot (repaints coalesce into one per event-loop turn);
+// hidden plots are replotted when they are shown. The y axes rescale to the visible data
+// without scanning the whole run: running extents for the whole-run view, a scan of the
+// window's points (found by binary search) for the scrolling view. A view of more than
+// kDenseView samples (the whole of a long run) is drawn lighter: the ±σ bands as outlines
+// and the lines 1 px thinner, since filling a band through 36,000 samples costs the
+// rasteriser ~30 ms a frame and wide antialiased lines half as much again.
+
+#include <QBrush>
+#include <QPen>
+#include <QWidget>
+#include <array>
+#include <chrono>
+#include <cstdint>
+
+#include "legofeup/ui/frame_stats.hpp"
+#include "legofeup/ui/plots/plot_export.hpp"
+#include "legofeup/ui/plots/plot_series.hpp"
+#include "legofeup/ui/plots/value_range.hpp"
+#include "legofeup/ui/run_history.hpp"
+
+class QComboBox;
+class QCustomPlot;
+class QCPGraph;
+class QCPItemStraightLine;
+class QCPItemText;
+class QTabWidget;
+
+namespace legofeup::ui {
+
+enum class BoundSide : int { Lower = 0, Upper = 1 };
+
+class PlotsPanel : public QWidget {
+    Q_OBJECT
+
+  public:
+    /// Samples in view above which a graph is drawn the light way (5 minutes at 20 Hz).
+    static constexpr int kDenseView = 6000;
+
+    explicit PlotsPanel(const RunHistory& history, QWidget* parent = nullptr);
+    ~PlotsPanel() override;
+    PlotsPanel(const PlotsPanel&) = delete;
+    PlotsPanel& operator=(const PlotsPanel&) = delete;
+
+    /// The plot of `kind` (owned by the panel; to show it alone, reparent it).
+    QCustomPlot* plot(PlotKind kind) const;
+    /// The graph drawing `series`.
+    QCPGraph* graph(Series series) const;
+    /// The χ² 95 % bound lines of the Nis and Nees plots (nullptr for the other plots).
+    QCPItemStraightLine* boundLine(PlotKind kind, BoundSide side) const;
+
+    /// Seconds of history shown; 0 = the whole run.
+    double timeWindow() const { return time_window_; }
+    double textScale() const { return text_scale_; }
+    /// The duration of each frame: all plots replotted for one batch of samples.
+    const FrameStats& frameStats() const { return frame_stats_; }
+
+    /// Writes every plot into `directory` as <file stem>.png/.pdf/.svg (covariance.png,
+    /// wheel_speeds.svg …) at `size` pixels, in the current colours. Never throws; the
+    /// result lists the files written or says what failed.
+    ExportResult exportPlots(const QString& directory, ExportFormats formats = kAllExportFormats,
+                             QSize size = QSize(1200, 800));
+
+  public slots:
+    /// The history started over: clears every graph.
+    void historyRestarted();
+    /// Samples [first, first + count) were appended to the history: adds their points only.
+    void samplesAppended(int first, int count);
+    /// Shows the last `seconds` of the run, scrolling with the latest sample; 0 = all of it.
+    void setTimeWindow(double seconds);
+    /// Scales every plot text (ticks, labels, legends, titles): ~1.6 for a projector.
+    void setTextScale(double scale);
+    /// Takes the colours and font of the widget's palette (also done on a palette change).
+    void applyPalette();
+
+  protected:
+    void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    QCustomPlot* buildPlot(PlotKind kind);
+    void addReferenceLine(PlotKind kind, int index, double value, const QString& label);
+    void moveReferenceLine(PlotKind kind, int index, double value, const QString& label);
+    void clearGraphs();
+    void updateAxes();
+    void updateAxes(PlotKind kind, double lower, double upper);
+    ValueRange visibleValues(Series series, double lower, double upper) const;
+    void lightenDenseGraphs(PlotKind kind, double lower, double upper);
+    void requestReplots();
+    void onBeforeReplot(PlotKind kind);
+    void onAfterReplot();
+
+    const RunHistory& history_;
+    std::uint64_t epoch_ = 0;
+    std::size_t taken_ = 0;  ///< samples of the history already in the graphs
+    double first_time_ = 0.0;
+    double last_time_ = 0.0;
+    double time_window_ = 0.0;
+    double text_scale_ = 1.0;
+
+    QTabWidget* tabs_ = nullptr;
+    QComboBox* window_choice_ = nullptr;
+    std::array<QCustomPlot*, kPlotKindCount> plots_{};
+    std::array<QCPGraph*, kSeriesCount> graphs_{};
+    std::array<ValueRange, kSeriesCount> extents_{};  ///< every value since the restart
+    /// Each graph's pen and fill from the look, used while few enough points are in view.
+    std::array<QPen, kSeriesCount> pens_{};
+    std::array<QBrush, kSeriesCount> brushes_{};
+    /// Horizontal reference lines with their labels: the χ² bounds, the IR trusted range.
+    struct ReferenceLine {
+        QCPItemStraightLine* line = nullptr;
+        QCPItemText* label = nullptr;
+        double value = 0.0;
+    };
+    std::array<std::array<ReferenceLine, 2>, kPlotKindCount> references_{};
+
+    std::array<bool, kPlotKindCount> stale_{};           ///< changed while hidden
+    std::array<bool, kPlotKindCount> replot_pending_{};  ///< queued, not yet run
+    std::chrono::steady_clock::time_point replot_started_;
+    std::chrono::nanoseconds frame_time_{0};
+    FrameStats frame_stats_;
+};
+
+}  // namespace legofeup::ui
