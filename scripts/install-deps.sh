@@ -9,6 +9,8 @@ packages=(
     libbox2d-dev                        # sim: physics
     libtomlplusplus-dev nlohmann-json3-dev  # lessons: configuration files, summaries
     libcli11-dev libcairo2-dev fonts-dejavu-core  # legofeup-cli: options, PNG/SVG plots
+    qt6-base-dev qt6-svg-dev libqcustomplot-dev  # ui/: the desktop application
+    xvfb xauth                          # scripts/screenshots.sh: the GUI on a virtual display
     libgtest-dev libgmock-dev           # tests
     libbenchmark-dev                    # bench/
     clang libclang-rt-14-dev            # fuzz/: libFuzzer targets of the protocol decoders

@@ -1,1 +1,2 @@
-# panels tests
+# The panels' parts.
+legofeup_add_ui_gtest(ui_panels_test test_number_text.cpp)

@@ -116,11 +116,15 @@ TEST(LiveRun, PauseFreezesSimulatedTimeAndResumeContinues) {
     LiveRun live(served.run, served.target, [] {});
     collect_until(live, samples, [](const auto& s) { return s.size() >= 20; });
     live.set_paused(true);
-    std::this_thread::sleep_for(300ms);
+    // The worker takes the request at its next step; wait for it (a loaded machine is slow).
+    for (int i = 0; i < 500 && live.status().phase != RunPhase::Paused; ++i) {
+        std::this_thread::sleep_for(10ms);
+    }
+    ASSERT_EQ(live.status().phase, RunPhase::Paused);
+    std::this_thread::sleep_for(300ms);  // frames already under way are still taken
     for (RunSample& sample : live.take_samples()) {
         samples.push_back(std::move(sample));
     }
-    EXPECT_EQ(live.status().phase, RunPhase::Paused);
     const std::size_t paused_count = samples.size();
     std::this_thread::sleep_for(300ms);
     EXPECT_TRUE(live.take_samples().empty());  // no steps while paused

@@ -3,4 +3,5 @@ list(APPEND LEGOFEUP_UI_SOURCES
     session/live_run.cpp
     session/session.cpp
     session/run_samples.cpp
+    include/legofeup/ui/session/session.hpp  # Q_OBJECT: listed for AUTOMOC
 )

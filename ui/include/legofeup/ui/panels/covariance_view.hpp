@@ -1,0 +1,37 @@
+#pragma once
+// The covariance matrix P of the latest step, shown numerically (paper Fig. 9 a), with the
+// standard deviations and the step's wall update: what a student reads off while the ellipse
+// grows and collapses.
+
+#include <QWidget>
+#include <array>
+
+class QLabel;
+
+namespace legofeup::ui {
+
+class RunHistory;
+
+class CovarianceView : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit CovarianceView(const RunHistory& history, QWidget* parent = nullptr);
+
+    /// The text shown in cell (row, column) of P.
+    QString cellText(int row, int column) const;
+
+  public slots:
+    void historyRestarted();
+    void samplesAppended(int first, int count);
+
+  private:
+    void showLatest();
+
+    const RunHistory& history_;
+    std::array<QLabel*, 9> cells_{};
+    QLabel* sigmas_ = nullptr;
+    QLabel* update_ = nullptr;
+};
+
+}  // namespace legofeup::ui

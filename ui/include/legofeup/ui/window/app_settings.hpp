@@ -1,0 +1,49 @@
+#pragma once
+// Every persisted preference in one typed place: its key, its default and its type together
+// (docs/architecture.md). Stored with QSettings (~/.config/LegoFeup/LegoFeup Lab.conf); the
+// last configuration itself is a TOML file beside it (last_config_path()).
+
+#include <QSettings>
+#include <QString>
+#include <QVariant>
+
+namespace legofeup::ui {
+
+template <class T>
+struct Preference {
+    const char* key;
+    T fallback;
+
+    T read() const {
+        const QVariant value = QSettings().value(QLatin1String(key));
+        return value.isValid() && value.canConvert<T>() ? value.value<T>() : fallback;
+    }
+    void write(const T& value) const { QSettings().setValue(QLatin1String(key), value); }
+};
+
+namespace preferences {
+
+inline const Preference<QByteArray> kWindowGeometry{"window/geometry", {}};
+inline const Preference<QByteArray> kWindowState{"window/state", {}};
+inline const Preference<bool> kLargeText{"view/largeText", false};
+/// "system", "light" or "dark".
+inline const Preference<QString> kTheme{"view/theme", QStringLiteral("system")};
+/// 0: 1σ, 1: 95 %, 2: 99 % (EllipseConfidence).
+inline const Preference<int> kEllipseConfidence{"view/ellipseConfidence", 0};
+inline const Preference<bool> kFollowRobot{"view/followRobot", false};
+inline const Preference<bool> kShowFrameTimes{"view/showFrameTimes", false};
+/// Seconds of history in the plots; 0: the whole run.
+inline const Preference<double> kPlotWindow{"view/plotWindow", 60.0};
+/// 0: embedded, 1: external (LinkKind).
+inline const Preference<int> kLinkKind{"link/kind", 0};
+inline const Preference<QString> kLinkAddress{"link/address",
+                                              QStringLiteral("udp://127.0.0.1:5600")};
+inline const Preference<double> kSimulatorSpeed{"link/speed", 1.0};
+inline const Preference<QString> kExperiment{"lesson/experiment", QStringLiteral("f")};
+
+}  // namespace preferences
+
+/// Where the configuration in use is kept between sessions (the CLI's TOML format).
+QString last_config_path();
+
+}  // namespace legofeup::ui

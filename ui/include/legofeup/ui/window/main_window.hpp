@@ -1,0 +1,73 @@
+#pragma once
+// The LegoFeup Lab window: the arena in the middle, the plots below, the experiment and the
+// covariance matrix on the left, the configuration on the right. It builds the docks and
+// menus and wires signals — nothing else: the session owns the run, each widget its job.
+
+#include <QMainWindow>
+
+class QAction;
+class QLabel;
+class QTimer;
+
+namespace legofeup::ui {
+
+class ArenaView;
+class ConfigPanel;
+class CovarianceView;
+class ExperimentPanel;
+class FileActions;
+class KeyboardDriver;
+class PlotsPanel;
+class RunToolBar;
+class Session;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+  public:
+    explicit MainWindow(Session& session, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    ArenaView& arena() const { return *arena_; }
+    PlotsPanel& plots() const { return *plots_; }
+    ConfigPanel& configPanel() const { return *config_; }
+    ExperimentPanel& experimentPanel() const { return *experiment_; }
+    CovarianceView& covarianceView() const { return *covariance_; }
+    RunToolBar& runToolBar() const { return *toolbar_; }
+    KeyboardDriver& keyboard() const { return *keyboard_; }
+    FileActions& fileActions() const { return *files_; }
+
+    /// The projector view: everything's text 1.6× larger.
+    void setLargeText(bool on);
+    /// Logs the frame-time statistics every `seconds` (0: never) to the standard error.
+    void setFrameLogInterval(int seconds);
+    /// The status line's frame-time part (also logged): arena and plots, mean/p99/max.
+    QString frameTimesText() const;
+
+  protected:
+    void closeEvent(QCloseEvent* event) override;
+
+  private:
+    void buildDocks();
+    void buildMenus();
+    void updateStatus();
+    void restorePreferences();
+    void savePreferences() const;
+
+    Session& session_;
+    ArenaView* arena_ = nullptr;
+    PlotsPanel* plots_ = nullptr;
+    ConfigPanel* config_ = nullptr;
+    ExperimentPanel* experiment_ = nullptr;
+    CovarianceView* covariance_ = nullptr;
+    RunToolBar* toolbar_ = nullptr;
+    KeyboardDriver* keyboard_ = nullptr;
+    FileActions* files_ = nullptr;
+    QLabel* status_ = nullptr;
+    QLabel* frames_ = nullptr;
+    QAction* large_text_ = nullptr;
+    QAction* frame_times_ = nullptr;
+    QTimer* frame_log_ = nullptr;
+};
+
+}  // namespace legofeup::ui

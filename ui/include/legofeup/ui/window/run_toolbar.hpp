@@ -1,0 +1,50 @@
+#pragma once
+// The run's controls: start, pause, stop, reset; where the robot is (embedded simulator,
+// an external legofeup-sim, the NXT); the simulator's speed; and the path controller switch
+// (off: drive with the keyboard).
+
+#include <QToolBar>
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QLineEdit;
+
+namespace legofeup::ui {
+
+class Session;
+enum class RunPhase : std::uint8_t;
+
+class RunToolBar : public QToolBar {
+    Q_OBJECT
+
+  public:
+    explicit RunToolBar(Session& session, QWidget* parent = nullptr);
+
+    QAction* startAction() const { return start_; }
+    QAction* pauseAction() const { return pause_; }
+    QAction* stopAction() const { return stop_; }
+    QAction* resetAction() const { return reset_; }
+    QComboBox* linkChoice() const { return link_; }
+    QLineEdit* addressField() const { return address_; }
+    QComboBox* speedChoice() const { return speed_; }
+    QCheckBox* pathControllerSwitch() const { return path_controller_; }
+
+  private:
+    void phaseChanged(RunPhase phase);
+    void linkEdited();
+
+    Session& session_;
+    QAction* start_ = nullptr;
+    QAction* pause_ = nullptr;
+    QAction* stop_ = nullptr;
+    QAction* reset_ = nullptr;
+    QComboBox* link_ = nullptr;
+    QLineEdit* address_ = nullptr;
+    QAction* address_action_ = nullptr;
+    QComboBox* speed_ = nullptr;
+    QAction* speed_action_ = nullptr;
+    QCheckBox* path_controller_ = nullptr;
+};
+
+}  // namespace legofeup::ui

@@ -1,0 +1,93 @@
+#include "legofeup/ui/panels/covariance_view.hpp"
+
+#include <QFontDatabase>
+#include <QGridLayout>
+#include <QLabel>
+#include <cmath>
+
+#include "legofeup/core/angles.hpp"
+#include "legofeup/ui/run_history.hpp"
+
+namespace legofeup::ui {
+
+CovarianceView::CovarianceView(const RunHistory& history, QWidget* parent)
+    : QWidget(parent), history_(history) {
+    auto* grid = new QGridLayout(this);
+    const QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    const std::array<QString, 3> names = {QStringLiteral("x"), QStringLiteral("y"),
+                                          QStringLiteral("θ")};
+    grid->addWidget(new QLabel(QStringLiteral("P"), this), 0, 0);
+    for (int i = 0; i < 3; ++i) {
+        grid->addWidget(new QLabel(names[static_cast<std::size_t>(i)], this), 0, i + 1,
+                        Qt::AlignCenter);
+        grid->addWidget(new QLabel(names[static_cast<std::size_t>(i)], this), i + 1, 0);
+        for (int j = 0; j < 3; ++j) {
+            auto* cell = new QLabel(this);
+            cell->setFont(mono);
+            cell->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            cell->setTextInteractionFlags(Qt::TextSelectableByMouse);
+            cell->setObjectName(QStringLiteral("P%1%2").arg(i).arg(j));
+            cells_[static_cast<std::size_t>(i * 3 + j)] = cell;
+            grid->addWidget(cell, i + 1, j + 1);
+        }
+    }
+    sigmas_ = new QLabel(this);
+    sigmas_->setFont(mono);
+    grid->addWidget(sigmas_, 4, 0, 1, 4);
+    update_ = new QLabel(this);
+    update_->setFont(mono);
+    update_->setWordWrap(true);
+    grid->addWidget(update_, 5, 0, 1, 4);
+    grid->setRowStretch(6, 1);
+    grid->setColumnStretch(1, 1);
+    grid->setColumnStretch(2, 1);
+    grid->setColumnStretch(3, 1);
+    showLatest();
+}
+
+QString CovarianceView::cellText(int row, int column) const {
+    return cells_[static_cast<std::size_t>(row * 3 + column)]->text();
+}
+
+void CovarianceView::historyRestarted() {
+    showLatest();
+}
+
+void CovarianceView::samplesAppended(int /*first*/, int /*count*/) {
+    showLatest();
+}
+
+void CovarianceView::showLatest() {
+    if (history_.empty()) {
+        for (QLabel* cell : cells_) {
+            cell->setText(QStringLiteral("—"));
+        }
+        sigmas_->setText(tr("No run yet: press Start."));
+        update_->clear();
+        return;
+    }
+    const LoopSnapshot& snapshot = history_.latest().snapshot;
+    const StateCovariance& p = snapshot.covariance;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            cells_[static_cast<std::size_t>(i * 3 + j)]->setText(QString::number(p(i, j), 'e', 3));
+        }
+    }
+    sigmas_->setText(tr("σx %1 mm   σy %2 mm   σθ %3°")
+                         .arg(1000.0 * std::sqrt(std::max(p(0, 0), 0.0)), 0, 'f', 1)
+                         .arg(1000.0 * std::sqrt(std::max(p(1, 1), 0.0)), 0, 'f', 1)
+                         .arg(std::sqrt(std::max(p(2, 2), 0.0)) * 180.0 / kPi, 0, 'f', 2));
+    const WallUpdateReport& update = snapshot.update;
+    if (update.status == StepStatus::Applied) {
+        update_->setText(tr("t = %1 s: wall update, innovation (%2 m, %3°), NIS %4")
+                             .arg(snapshot.time, 0, 'f', 2)
+                             .arg(update.innovation(0), 0, 'f', 4)
+                             .arg(update.innovation(1) * 180.0 / kPi, 0, 'f', 2)
+                             .arg(update.nis, 0, 'f', 2));
+    } else {
+        update_->setText(
+            tr("t = %1 s: prediction only (no wall update)").arg(snapshot.time, 0, 'f', 2));
+    }
+}
+
+}  // namespace legofeup::ui

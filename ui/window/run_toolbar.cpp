@@ -1,0 +1,116 @@
+#include "legofeup/ui/window/run_toolbar.hpp"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QStandardItemModel>
+#include <QStyle>
+
+#include "legofeup/ui/session/session.hpp"
+
+namespace legofeup::ui {
+namespace {
+
+constexpr std::array kSpeeds = {0.5, 1.0, 2.0, 5.0, 10.0};
+
+}  // namespace
+
+RunToolBar::RunToolBar(Session& session, QWidget* parent)
+    : QToolBar(tr("Run"), parent), session_(session) {
+    setObjectName(QStringLiteral("runToolBar"));
+    setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+
+    start_ = addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Start"));
+    start_->setShortcut(Qt::Key_F5);
+    start_->setToolTip(tr("Start a run (F5); resumes a paused one"));
+    pause_ = addAction(style()->standardIcon(QStyle::SP_MediaPause), tr("Pause"));
+    pause_->setCheckable(true);
+    pause_->setShortcut(Qt::Key_F6);
+    stop_ = addAction(style()->standardIcon(QStyle::SP_MediaStop), tr("Stop"));
+    stop_->setShortcut(Qt::Key_F7);
+    stop_->setToolTip(tr("Stop the robot (F7); the run's plots stay"));
+    reset_ = addAction(style()->standardIcon(QStyle::SP_BrowserReload), tr("Reset"));
+    reset_->setShortcut(Qt::Key_F8);
+    reset_->setToolTip(tr("Back to the start: empty plots, initial pose (F8)"));
+    connect(start_, &QAction::triggered, &session_, &Session::start);
+    connect(pause_, &QAction::toggled, &session_, &Session::setPaused);
+    connect(stop_, &QAction::triggered, &session_, &Session::stop);
+    connect(reset_, &QAction::triggered, &session_, &Session::reset);
+    addSeparator();
+
+    path_controller_ = new QCheckBox(tr("Path controller"), this);
+    path_controller_->setObjectName(QStringLiteral("pathController"));
+    path_controller_->setChecked(!session_.manualDriving());
+    path_controller_->setToolTip(
+        tr("Off: drive with the arrow keys or WASD, space to stop (V_ref and W_ref set the "
+           "speeds)"));
+    addWidget(path_controller_);
+    connect(path_controller_, &QCheckBox::toggled, this,
+            [this](bool on) { session_.setManualDriving(!on); });
+    connect(&session_, &Session::manualDrivingChanged, path_controller_,
+            [this](bool manual) { path_controller_->setChecked(!manual); });
+    addSeparator();
+
+    addWidget(new QLabel(tr("Robot: "), this));
+    link_ = new QComboBox(this);
+    link_->setObjectName(QStringLiteral("linkChoice"));
+    link_->addItem(tr("Embedded simulator"));
+    link_->addItem(tr("External legofeup-sim"));
+    link_->addItem(tr("NXT over Bluetooth"));
+    // The NXT link is its own milestone: listed so students know it exists, not selectable.
+    if (auto* model = qobject_cast<QStandardItemModel*>(link_->model())) {
+        model->item(static_cast<int>(LinkKind::Nxt))->setEnabled(false);
+        model->item(static_cast<int>(LinkKind::Nxt))
+            ->setToolTip(tr("Not available yet: arrives with the NXT Bluetooth driver"));
+    }
+    link_->setCurrentIndex(static_cast<int>(session_.linkChoice().kind));
+    addWidget(link_);
+    address_ = new QLineEdit(session_.linkChoice().address, this);
+    address_->setObjectName(QStringLiteral("linkAddress"));
+    address_->setToolTip(tr("The robot port of a running legofeup-sim, e.g. udp://127.0.0.1:5600"));
+    address_->setMinimumWidth(fontMetrics().horizontalAdvance(address_->text()) + 24);
+    address_action_ = addWidget(address_);
+    speed_ = new QComboBox(this);
+    speed_->setObjectName(QStringLiteral("simulatorSpeed"));
+    speed_->setToolTip(tr("Simulated seconds per real second (applies at the next start)"));
+    for (const double speed : kSpeeds) {
+        speed_->addItem(QStringLiteral("%1×").arg(speed), speed);
+    }
+    speed_->setCurrentIndex(std::max(0, speed_->findData(session_.linkChoice().speed)));
+    speed_action_ = addWidget(speed_);
+    connect(link_, &QComboBox::currentIndexChanged, this, &RunToolBar::linkEdited);
+    connect(address_, &QLineEdit::editingFinished, this, &RunToolBar::linkEdited);
+    connect(speed_, &QComboBox::currentIndexChanged, this, &RunToolBar::linkEdited);
+
+    connect(&session_, &Session::phaseChanged, this, &RunToolBar::phaseChanged);
+    phaseChanged(session_.phase());
+    linkEdited();
+}
+
+void RunToolBar::linkEdited() {
+    LinkChoice choice;
+    choice.kind = static_cast<LinkKind>(link_->currentIndex());
+    choice.address = address_->text().trimmed();
+    choice.speed = speed_->currentData().toDouble();
+    session_.setLinkChoice(choice);
+    address_action_->setVisible(choice.kind == LinkKind::External);
+    speed_action_->setVisible(choice.kind == LinkKind::Embedded);
+}
+
+void RunToolBar::phaseChanged(RunPhase phase) {
+    const bool active = session_.running();
+    start_->setEnabled(!active || phase == RunPhase::Paused);
+    pause_->setEnabled(phase == RunPhase::Running || phase == RunPhase::Paused);
+    {
+        const QSignalBlocker blocker(pause_);
+        pause_->setChecked(phase == RunPhase::Paused);
+    }
+    stop_->setEnabled(active);
+    link_->setEnabled(!active);
+    address_->setEnabled(!active);
+    speed_->setEnabled(!active);
+}
+
+}  // namespace legofeup::ui
