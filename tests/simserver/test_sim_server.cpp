@@ -325,7 +325,7 @@ TEST(SimServer, DropsAndCountsEveryKindOfMalformedPacketAndKeepsServing) {
     const comms::Bytes good = encode(command);
     const auto altered = [&](std::size_t offset, std::uint8_t value) {
         comms::Bytes bytes = good;
-        bytes[offset] = value;
+        bytes.at(offset) = value;
         return bytes;
     };
     comms::Bytes oversized = good;

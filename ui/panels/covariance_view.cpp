@@ -1,5 +1,6 @@
 #include "legofeup/ui/panels/covariance_view.hpp"
 
+#include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QLabel>
@@ -13,7 +14,6 @@ namespace legofeup::ui {
 CovarianceView::CovarianceView(const RunHistory& history, QWidget* parent)
     : QWidget(parent), history_(history) {
     auto* grid = new QGridLayout(this);
-    const QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     const std::array<QString, 3> names = {QStringLiteral("x"), QStringLiteral("y"),
                                           QStringLiteral("θ")};
     grid->addWidget(new QLabel(QStringLiteral("P"), this), 0, 0);
@@ -23,7 +23,6 @@ CovarianceView::CovarianceView(const RunHistory& history, QWidget* parent)
         grid->addWidget(new QLabel(names[static_cast<std::size_t>(i)], this), i + 1, 0);
         for (int j = 0; j < 3; ++j) {
             auto* cell = new QLabel(this);
-            cell->setFont(mono);
             cell->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
             cell->setTextInteractionFlags(Qt::TextSelectableByMouse);
             cell->setObjectName(QStringLiteral("P%1%2").arg(i).arg(j));
@@ -32,17 +31,35 @@ CovarianceView::CovarianceView(const RunHistory& history, QWidget* parent)
         }
     }
     sigmas_ = new QLabel(this);
-    sigmas_->setFont(mono);
     grid->addWidget(sigmas_, 4, 0, 1, 4);
     update_ = new QLabel(this);
-    update_->setFont(mono);
     update_->setWordWrap(true);
     grid->addWidget(update_, 5, 0, 1, 4);
     grid->setRowStretch(6, 1);
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(2, 1);
     grid->setColumnStretch(3, 1);
+    useMonospaceFont();
     showLatest();
+}
+
+void CovarianceView::useMonospaceFont() {
+    // The numbers line up in a fixed-width font, as large as the rest of the text (which
+    // follows the application's font: the projector's large text included).
+    QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    mono.setPointSizeF(font().pointSizeF());
+    for (QLabel* label : cells_) {
+        label->setFont(mono);
+    }
+    sigmas_->setFont(mono);
+    update_->setFont(mono);
+}
+
+void CovarianceView::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange) {
+        useMonospaceFont();
+    }
 }
 
 QString CovarianceView::cellText(int row, int column) const {

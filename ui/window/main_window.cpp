@@ -166,6 +166,10 @@ void MainWindow::buildMenus() {
     follow->setChecked(arena_->followRobot());
     connect(follow, &QAction::toggled, arena_, &ArenaView::setFollowRobot);
     connect(arena_, &ArenaView::followRobotChanged, follow, &QAction::setChecked);
+    QAction* legend = view->addAction(tr("Arena &legend"));
+    legend->setCheckable(true);
+    legend->setChecked(arena_->showLegend());
+    connect(legend, &QAction::toggled, arena_, &ArenaView::setShowLegend);
     view->addAction(tr("Zoom &in"), QKeySequence::ZoomIn, arena_, &ArenaView::zoomIn);
     view->addAction(tr("Zoom &out"), QKeySequence::ZoomOut, arena_, &ArenaView::zoomOut);
     view->addAction(tr("Fit the &arena"), QKeySequence(Qt::CTRL | Qt::Key_0), arena_,
@@ -222,9 +226,11 @@ void MainWindow::setLargeText(bool on) {
     const QSignalBlocker blocker(large_text_);
     large_text_->setChecked(on);
     const double scale = on ? kLargeTextScale : 1.0;
+    // The views draw with their widget's font, which follows the application's: scaling it
+    // is enough for their text (a text scale of their own would scale twice).
     apply_appearance(*qApp, theme_from_name(preferences::kTheme.read()), scale);
-    arena_->setTextScale(scale);
-    plots_->setTextScale(scale);
+    arena_->setTextScale(1.0);
+    plots_->setTextScale(1.0);
     preferences::kLargeText.write(on);
 }
 

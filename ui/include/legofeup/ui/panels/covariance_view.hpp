@@ -25,8 +25,12 @@ class CovarianceView : public QWidget {
     void historyRestarted();
     void samplesAppended(int first, int count);
 
+  protected:
+    void changeEvent(QEvent* event) override;
+
   private:
     void showLatest();
+    void useMonospaceFont();
 
     const RunHistory& history_;
     std::array<QLabel*, 9> cells_{};
