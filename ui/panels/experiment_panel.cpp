@@ -69,6 +69,7 @@ void ExperimentPanel::showExperiment(const QString& id) {
     choice_->setCurrentIndex(index);
     text_->setPlainText(QString::fromStdString(experiment->instructions));
     expectation_->setText(QString::fromStdString(experiment->expectation));
+    reveal_->setChecked(false);  // a new step's conclusion starts folded
 }
 
 QString ExperimentPanel::currentExperiment() const {
@@ -85,9 +86,7 @@ void ExperimentPanel::apply(int index) {
     if (experiment == nullptr) {
         return;
     }
-    text_->setPlainText(QString::fromStdString(experiment->instructions));
-    expectation_->setText(QString::fromStdString(experiment->expectation));
-    reveal_->setChecked(false);
+    showExperiment(QString::fromStdString(experiment->id));
     const QStringList problems = session_.setConfig(experiment->config);
     if (!problems.isEmpty()) {
         note_->setText(tr("The preset was refused:\n%1").arg(problems.join('\n')));

@@ -1,5 +1,7 @@
 #include "legofeup/ui/plots/plot_export.hpp"
 
+#include "legofeup/ui/write_atomically.hpp"
+
 #include <qcustomplot.h>
 
 #include <QBuffer>
@@ -9,9 +11,9 @@
 #include <QPageSize>
 #include <QPdfWriter>
 #include <QPixmap>
-#include <QSaveFile>
 #include <QSvgGenerator>
 #include "legofeup/ui/plots/plot_style.hpp"
+#include "legofeup/ui/write_atomically.hpp"
 
 namespace legofeup::ui {
 
@@ -83,23 +85,6 @@ QByteArray render(QCustomPlot& plot, ExportFormat format, QSize size, const QStr
         }
     }
     return bytes;
-}
-
-/// Writes `bytes` to `path` through a temporary file renamed into place on success.
-QString write_atomically(const QString& path, const QByteArray& bytes) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    }
-    if (file.write(bytes) != bytes.size()) {
-        const QString error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        file.cancelWriting();
-        return error;
-    }
-    if (!file.commit()) {
-        return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-    }
-    return {};
 }
 
 QString check_directory(const QString& directory) {

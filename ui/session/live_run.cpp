@@ -6,16 +6,6 @@
 #include "legofeup/ui/session/run_samples.hpp"
 
 namespace legofeup::ui {
-namespace {
-
-bool same_noise(const comms::NoiseSettings& a, const comms::NoiseSettings& b) {
-    return a.wheel_diameter_ratio == b.wheel_diameter_ratio
-           && a.wheel_base_ratio == b.wheel_base_ratio && a.slip_noise == b.slip_noise
-           && a.ir_noise == b.ir_noise;
-}
-
-}  // namespace
-
 LiveRun::LiveRun(lessons::ResolvedRun run, lessons::UdpTarget target, Notify notify)
     : run_(std::move(run)),
       target_(target),
@@ -92,7 +82,7 @@ void LiveRun::apply(Requests requests, LegoFeupLoop& loop,
         // Validated by the session already: reconfigure() cannot refuse it.
         loop.reconfigure(requests.run->loop);
         const comms::NoiseSettings noise = lessons::noise_settings_of(requests.run->robot);
-        if (!same_noise(noise, lessons::noise_settings_of(run_.robot))) {
+        if (noise != lessons::noise_settings_of(run_.robot)) {
             connection.control().set_noise(noise);
         }
         run_ = std::move(*requests.run);

@@ -2,7 +2,6 @@
 
 #include <QDir>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <algorithm>
 #include <array>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/simserver/sim_server.hpp"
 #include "legofeup/ui/session/run_samples.hpp"
+#include "legofeup/ui/write_atomically.hpp"
 
 namespace legofeup::ui {
 namespace {
@@ -128,15 +128,8 @@ void Session::setLinkChoice(const LinkChoice& choice) {
 }
 
 QString Session::saveConfig(const QString& path) const {
-    QSaveFile file(path);
-    const std::string text = lessons::config_to_toml(config_, "LegoFeup Lab configuration");
-    if (!file.open(QIODevice::WriteOnly)
-        || file.write(text.data(), static_cast<qint64>(text.size()))
-               != static_cast<qint64>(text.size())
-        || !file.commit()) {
-        return tr("Cannot write %1: %2").arg(path, file.errorString());
-    }
-    return {};
+    return write_atomically(path, QByteArray::fromStdString(lessons::config_to_toml(
+                                      config_, "LegoFeup Lab configuration")));
 }
 
 QStringList Session::loadConfig(const QString& path) {
@@ -155,20 +148,16 @@ QString Session::exportTrace(const QString& path) const {
             writer.on_step(sample.snapshot, *sample.truth);
         }
     }
-    QSaveFile file(path);
-    const std::string csv = text.str();
-    if (!file.open(QIODevice::WriteOnly)
-        || file.write(csv.data(), static_cast<qint64>(csv.size()))
-               != static_cast<qint64>(csv.size())
-        || !file.commit()) {
-        return tr("Cannot write %1: %2").arg(path, file.errorString());
-    }
-    return {};
+    return write_atomically(path, QByteArray::fromStdString(text.str()));
+}
+
+void Session::closeTrace() {
+    trace_writer_.reset();  // the writer refers to the file: it goes first
+    trace_file_.reset();
 }
 
 QString Session::setRecordingDirectory(const QString& directory) {
-    trace_writer_.reset();
-    trace_file_.reset();
+    closeTrace();
     recording_directory_.clear();
     if (directory.isEmpty()) {
         return {};
@@ -189,8 +178,7 @@ QString Session::setRecordingDirectory(const QString& directory) {
 }
 
 void Session::openTrace() {
-    trace_writer_.reset();
-    trace_file_.reset();
+    closeTrace();
     if (recording_directory_.isEmpty()) {
         return;
     }
@@ -295,8 +283,7 @@ void Session::stop() {
 void Session::reset() {
     retireRun();
     embedded_.reset();
-    trace_writer_.reset();
-    trace_file_.reset();
+    closeTrace();
     status_ = {};
     phase_ = RunPhase::Idle;
     restartHistory();

@@ -14,6 +14,7 @@
 #include <QScreen>
 #include <QStatusBar>
 #include <QTimer>
+#include <type_traits>
 
 #include "legofeup/ui/arena/arena_view.hpp"
 #include "legofeup/ui/panels/config_panel.hpp"
@@ -70,6 +71,10 @@ void MainWindow::buildDocks() {
     config_ = new ConfigPanel(session_, this);
     experiment_ = new ExperimentPanel(session_, this);
     covariance_ = new CovarianceView(session_.history(), this);
+    arena_->setEllipseConfidence(
+        static_cast<EllipseConfidence>(std::clamp(preferences::kEllipseConfidence.read(), 0, 2)));
+    arena_->setFollowRobot(preferences::kFollowRobot.read());
+    plots_->setTimeWindow(preferences::kPlotWindow.read());
     toolbar_ = new RunToolBar(session_, this);
     addToolBar(Qt::TopToolBarArea, toolbar_);
 
@@ -83,11 +88,14 @@ void MainWindow::buildDocks() {
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
 
     // The run's samples reach every view from one signal: one batch, one repaint each.
-    for (auto* view : std::initializer_list<QObject*>{arena_, plots_, covariance_}) {
-        connect(&session_, SIGNAL(historyRestarted()), view, SLOT(historyRestarted()));
-        connect(&session_, SIGNAL(samplesAppended(int, int)), view,
-                SLOT(samplesAppended(int, int)));
-    }
+    const auto wire = [this](auto* view) {
+        using View = std::remove_pointer_t<decltype(view)>;
+        connect(&session_, &Session::historyRestarted, view, &View::historyRestarted);
+        connect(&session_, &Session::samplesAppended, view, &View::samplesAppended);
+    };
+    wire(arena_);
+    wire(plots_);
+    wire(covariance_);
     connect(&session_, &Session::samplesAppended, this, &MainWindow::updateStatus);
     connect(&session_, &Session::phaseChanged, this, &MainWindow::updateStatus);
     connect(&session_, &Session::problem, this,
@@ -152,7 +160,6 @@ void MainWindow::buildMenus() {
     for (const auto& [label, level] : levels) {
         QAction* action = confidence->addAction(label);
         action->setCheckable(true);
-        action->setData(static_cast<int>(level));
         action->setChecked(level == arena_->ellipseConfidence());
         confidence_group->addAction(action);
         connect(action, &QAction::triggered, this, [this, level = level] {
@@ -282,17 +289,7 @@ void MainWindow::restorePreferences() {
             Qt::Horizontal);
     }
     restoreState(preferences::kWindowState.read());
-    arena_->setEllipseConfidence(
-        static_cast<EllipseConfidence>(std::clamp(preferences::kEllipseConfidence.read(), 0, 2)));
-    arena_->setFollowRobot(preferences::kFollowRobot.read());
-    plots_->setTimeWindow(preferences::kPlotWindow.read());
     frame_times_->setChecked(preferences::kShowFrameTimes.read());
-    for (QAction* action : findChildren<QAction*>()) {
-        if (action->data().isValid() && action->isCheckable() && action->actionGroup()) {
-            action->setChecked(action->data().toInt()
-                               == static_cast<int>(arena_->ellipseConfidence()));
-        }
-    }
     if (preferences::kLargeText.read()) {
         setLargeText(true);
     }

@@ -7,6 +7,7 @@
 #include <QLineEdit>
 #include <QStandardItemModel>
 #include <QStyle>
+#include <array>
 
 #include "legofeup/ui/session/session.hpp"
 

@@ -160,6 +160,8 @@ struct NoiseSettings {
     double wheel_base_ratio = 1.0;      ///< E_b
     double slip_noise = 0.0;            ///< m^½
     double ir_noise = 0.0;              ///< σ of each IR distance, m
+
+    friend bool operator==(const NoiseSettings&, const NoiseSettings&) = default;
 };
 
 struct ControlRequestPacket {

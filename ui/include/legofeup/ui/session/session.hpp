@@ -111,6 +111,7 @@ class Session : public QObject {
     void retireRun();
     std::optional<lessons::UdpTarget> prepareTarget();
     void openTrace();
+    void closeTrace();
 
     lessons::RunConfig config_;
     lessons::ResolvedRun resolved_;
