@@ -37,8 +37,9 @@ bool LinkStepper::advance(LegoFeupLoop& loop, RobotLink& link, const StepHandler
                                        + std::to_string(kMaxSilentPeriods) + " control periods"
                                  : "the link delivered no first frame");
         }
-        // Before the first frame there is nothing to predict from.
-        return have_frame_ && step_without_frame(loop, on_step);
+        // Before the first frame there is nothing to predict from; while the source is
+        // paused no period goes by.
+        return have_frame_ && !time_stood_still_ && step_without_frame(loop, on_step);
     }
     silent_periods_ = 0;
     const bool paused = have_frame_ && frame->time <= last_time_;  // time stood still
@@ -56,6 +57,7 @@ bool LinkStepper::advance(LegoFeupLoop& loop, RobotLink& link, const StepHandler
         }
     }
     have_frame_ = true;
+    time_stood_still_ = paused;
     last_sequence_ = frame->sequence;
     last_time_ = frame->time;
     stepped_without_frame_ = 0;

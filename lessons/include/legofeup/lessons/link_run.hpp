@@ -74,6 +74,9 @@ class LinkStepper {
     std::uint32_t last_sequence_ = 0;
     double last_time_ = 0.0;
     std::uint32_t stepped_without_frame_ = 0;  ///< since the last frame
+    /// The last frame did not advance time: the source is paused, so a wait without a frame
+    /// is not a missed period (a slow paused server would otherwise grow P while paused).
+    bool time_stood_still_ = false;
     int silent_periods_ = 0;
     bool stepped_ = false;
     std::uint64_t frames_missing_ = 0;
