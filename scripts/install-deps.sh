@@ -10,9 +10,11 @@ packages=(
     libtomlplusplus-dev nlohmann-json3-dev  # lessons: configuration files, summaries
     libcli11-dev libcairo2-dev fonts-dejavu-core  # legofeup-cli: options, PNG/SVG plots
     qt6-base-dev qt6-svg-dev libqcustomplot-dev  # ui/: the desktop application
+    qt6-connectivity-dev                # ui/: Bluetooth scanning in the NXT connect dialog
     xvfb xauth                          # scripts/screenshots.sh: the GUI on a virtual display
     libgtest-dev libgmock-dev           # tests
     libbenchmark-dev                    # bench/
+    libbluetooth-dev                    # comms/: BlueZ RFCOMM sockets for bt: brick addresses
     clang libclang-rt-14-dev            # fuzz/: libFuzzer targets of the protocol decoders
     python3                             # examples/python and its test
 )
