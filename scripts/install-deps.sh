@@ -15,6 +15,7 @@ packages=(
     libgtest-dev libgmock-dev           # tests
     libbenchmark-dev                    # bench/
     libbluetooth-dev                    # comms/: BlueZ RFCOMM sockets for bt: brick addresses
+    nbc                                 # tests: compile-check the NXC relay program
     clang libclang-rt-14-dev            # fuzz/: libFuzzer targets of the protocol decoders
     python3                             # examples/python and its test
 )

@@ -15,6 +15,7 @@
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/lockstep_run.hpp"
+#include "legofeup/lessons/nxt_run.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
 #include "legofeup/lessons/udp_run.hpp"
@@ -98,18 +99,108 @@ class AtomicFile {
     std::ofstream out_;
 };
 
-/// The link a run uses: the deterministic in-process simulator, or a server over UDP.
+/// The link a run uses: the deterministic in-process simulator, a server over UDP, or an NXT.
 struct LinkChoice {
-    std::optional<lessons::UdpTarget> udp;  ///< unset: lockstep
+    std::optional<lessons::UdpTarget> udp;  ///< both unset: lockstep
+    std::optional<lessons::NxtTarget> nxt;
 
-    std::string describe() const { return udp ? "udp://" + udp->robot.to_string() : "lockstep"; }
+    std::string describe() const {
+        if (nxt) {
+            return nxt->link.address.to_string();
+        }
+        return udp ? "udp://" + udp->robot.to_string() : "lockstep";
+    }
 };
 
 LinkChoice choose_link(const RunOptions& options) {
+    if (lessons::is_nxt_link(options.link)) {
+        return {std::nullopt,
+                lessons::parse_nxt_target(options.link, options.relay, options.truth_url)};
+    }
+    if (options.relay || !options.truth_url.empty()) {
+        throw InputError(
+            {{"", 0, options.relay ? "--relay" : "--truth", options.relay ? "" : options.truth_url,
+              "only applies to an NXT link (--link bt:…, serial:… or tcp:…)"}});
+    }
     if (options.link == "lockstep") {
         return {};
     }
-    return {lessons::parse_udp_target(options.link, options.truth_port, options.control_port)};
+    return {lessons::parse_udp_target(options.link, options.truth_port, options.control_port),
+            std::nullopt};
+}
+
+/// What an NXT run adds to the summary: the link's health, and why it ended early if it did.
+struct NxtRunReport {
+    lessons::RunResult result;
+    comms::nxt::LinkQuality quality;
+    bool truth_known = false;
+    std::string interrupted;  ///< the link failure that ended the run (empty: it did not)
+};
+
+// Counts the steps written, for a run the link cut short.
+class StepCounter final : public lessons::RunObserver {
+  public:
+    void on_step(const LoopSnapshot& /*snapshot*/, const GroundTruth& /*truth*/) override {
+        ++steps;
+    }
+    std::uint64_t steps = 0;
+};
+
+NxtRunReport run_on_nxt(const lessons::ResolvedRun& run, const lessons::NxtTarget& target,
+                        lessons::RunObserver& observer, const lessons::ProgressCallback& progress) {
+    const std::unique_ptr<lessons::RobotConnection> connection = lessons::connect_nxt(run, target);
+    lessons::UnknownTruth unknown;
+    TruthSource* truth = connection->truth_source();
+    NxtRunReport report;
+    report.truth_known = truth != nullptr;
+    try {
+        report.result =
+            lessons::run_with_link(run, connection->robot_link(),
+                                   truth != nullptr ? *truth : unknown, &observer, progress);
+    } catch (const comms::LinkError& failure) {
+        report.interrupted = failure.what();
+    } catch (const lessons::LinkSilent& failure) {
+        report.interrupted = failure.what();
+    }
+    connection->close();
+    report.quality = connection->nxt_quality().value_or(comms::nxt::LinkQuality{});
+    return report;
+}
+
+nlohmann::json nxt_to_json(const LinkChoice& link, const NxtRunReport& report) {
+    const comms::nxt::LinkQuality& q = report.quality;
+    nlohmann::json json = {
+        {"kind", "nxt"},
+        {"address", link.nxt->link.address.to_string()},
+        {"mode", link.nxt->link.mode == comms::nxt::CycleMode::Relay ? "relay" : "direct"},
+        {"truth", link.nxt->truth ? link.nxt->truth->to_string() : "unknown (real robot)"},
+        {"cycles", q.cycles},
+        {"rate_hz", q.rate_hz()},
+        {"mean_cycle_s", q.mean_cycle_seconds},
+        {"max_cycle_s", q.max_cycle_seconds},
+        {"timeouts", q.timeouts},
+        {"rejected_replies", q.rejected_replies},
+        {"invalid_ir_readings", q.invalid_ir_readings},
+        {"battery_mv", q.battery_millivolts ? nlohmann::json(*q.battery_millivolts) : nullptr},
+    };
+    if (!report.interrupted.empty()) {
+        json["interrupted"] = report.interrupted;
+    }
+    return json;
+}
+
+void print_nxt_link(const NxtRunReport& report) {
+    const comms::nxt::LinkQuality& q = report.quality;
+    std::printf(
+        "  NXT link: %llu cycles at %.1f Hz (mean %.1f ms, max %.1f ms), %llu timeouts, "
+        "%llu rejected replies",
+        static_cast<unsigned long long>(q.cycles), q.rate_hz(), 1e3 * q.mean_cycle_seconds,
+        1e3 * q.max_cycle_seconds, static_cast<unsigned long long>(q.timeouts),
+        static_cast<unsigned long long>(q.rejected_replies));
+    if (q.battery_millivolts) {
+        std::printf(", battery %.2f V", *q.battery_millivolts / 1000.0);
+    }
+    std::printf("\n");
 }
 
 nlohmann::json link_to_json(const LinkChoice& link, const lessons::UdpRunReport& report) {
@@ -172,6 +263,14 @@ int run_command(const RunOptions& options) {
     try {
         run = lessons::resolve(build_config(options, title));
         link = choose_link(options);
+        if (!options.profile.empty()) {
+            const lessons::RobotProfile profile = lessons::load_robot_profile(options.profile);
+            lessons::apply_robot_profile(profile, run.loop);
+            if (link.nxt) {
+                lessons::apply_robot_profile(profile, *link.nxt);
+            }
+            title += " + " + fs::path(options.profile).filename().string();
+        }
     } catch (const InputError& error) {
         report_problems(error);
         return kExitBadInput;
@@ -202,8 +301,14 @@ int run_command(const RunOptions& options) {
             std::snprintf(detail, sizeof detail, "%.0f s simulated", simulated);
             progress.update(fraction, detail);
         };
+        StepCounter steps;
+        observers.add(steps);
         lessons::UdpRunReport report;
-        if (link.udp) {
+        std::optional<NxtRunReport> nxt;
+        if (link.nxt) {
+            nxt = run_on_nxt(run, *link.nxt, observers, show_progress);
+            report.result = nxt->result;
+        } else if (link.udp) {
             report = lessons::run_over_udp(run, *link.udp, &observers, show_progress);
         } else {
             report.result = lessons::run_lockstep(run, &observers, show_progress);
@@ -214,18 +319,44 @@ int run_command(const RunOptions& options) {
 
         AtomicFile summary(out / "summary.json");
         nlohmann::json summary_json = lessons::run_summary(run, result, options.experiment, title);
-        summary_json["link"] = link_to_json(link, report);
+        summary_json["link"] = nxt ? nxt_to_json(link, *nxt) : link_to_json(link, report);
+        const bool interrupted = nxt && !nxt->interrupted.empty();
+        if (interrupted) {
+            summary_json["interrupted"] = nxt->interrupted;
+            summary_json["steps_recorded"] = steps.steps;
+        }
         summary.stream() << summary_json.dump(2) << '\n';
         summary.commit();
-        if (options.plots) {
+        // Plots compare the estimate with the truth: a real robot has none.
+        const bool plots = options.plots && !(nxt && !nxt->truth_known);
+        if (plots) {
             write_run_plots(recording, run.world, out, "LegoFeup " + title);
         }
+        if (interrupted) {
+            std::cerr << "error: the run on " << link.describe() << " stopped after " << steps.steps
+                      << " steps: " << nxt->interrupted
+                      << "\nA stop was sent to the motors as far as the link still carried it: "
+                         "check the robot. "
+                      << out.string() << "/trace.csv and summary.json keep what was recorded.\n";
+            return kExitLinkFailed;
+        }
         if (!options.quiet) {
-            print_summary(run, result, title);
+            if (nxt && !nxt->truth_known) {
+                std::printf(
+                    "LegoFeup %s on %s: %llu steps; no ground truth on a real robot, "
+                    "so no errors or NEES (see trace.csv)\n",
+                    title.c_str(), link.describe().c_str(),
+                    static_cast<unsigned long long>(steps.steps));
+            } else {
+                print_summary(run, result, title);
+            }
+            if (nxt) {
+                print_nxt_link(*nxt);
+            }
             std::printf("Results in %s: trace.csv, summary.json%s\n", out.string().c_str(),
-                        options.plots ? ", trajectory, errors, covariance, ir_distances and "
-                                        "wheel_speeds (.png and .svg)"
-                                      : "");
+                        plots ? ", trajectory, errors, covariance, ir_distances and "
+                                "wheel_speeds (.png and .svg)"
+                              : "");
         }
     } catch (const comms::LinkError& failure) {
         std::cerr << "error: " << failure.what() << '\n';

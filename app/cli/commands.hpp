@@ -22,10 +22,14 @@ struct RunOptions {
     std::string out_directory;
     bool plots = true;
     bool quiet = false;
-    /// "lockstep" (the in-process simulator) or "udp://a.b.c.d:port" (a legofeup-sim).
+    /// "lockstep" (the in-process simulator), "udp://a.b.c.d:port" (a legofeup-sim), or an
+    /// NXT: "bt:XX:XX:XX:XX:XX:XX", "serial:/dev/rfcomm0", "tcp:HOST:PORT" (docs/nxt.md).
     std::string link = "lockstep";
-    int truth_port = 0;    ///< 0: the robot port + 1
-    int control_port = 0;  ///< 0: the robot port + 2
+    bool relay = false;     ///< NXT: read through the relay program on the brick
+    std::string truth_url;  ///< NXT: an emulated brick's truth stream, udp://HOST:PORT
+    std::string profile;    ///< robot profile TOML: geometry and IR curve; NXT wiring
+    int truth_port = 0;     ///< 0: the robot port + 1
+    int control_port = 0;   ///< 0: the robot port + 2
 };
 
 int run_command(const RunOptions& options);

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "calibrate_commands.hpp"
 #include "commands.hpp"
 #include "legofeup/version.hpp"
 
@@ -33,8 +34,18 @@ int main(int argc, char** argv) {
     run->add_flag("!--no-plots", options.plots, "Skip the PNG and SVG plots");
     run->add_flag("--quiet,-q", options.quiet, "Print nothing on success");
     run->add_option("--link", options.link,
-                    "lockstep (the in-process simulator, deterministic) or udp://HOST:PORT (a "
-                    "running legofeup-sim, docs/protocol.md)");
+                    "lockstep (the in-process simulator, deterministic), udp://HOST:PORT (a "
+                    "running legofeup-sim, docs/protocol.md), or an NXT: bt:XX:XX:XX:XX:XX:XX, "
+                    "serial:/dev/rfcomm0 or tcp:HOST:PORT (docs/nxt.md)");
+    run->add_flag("--relay", options.relay,
+                  "NXT: read the brick through the relay program legofeup.rxe (docs/nxt.md)");
+    run->add_option("--profile", options.profile,
+                    "Robot profile (TOML, docs/calibration.md): the filter's wheel geometry and "
+                    "IR curve, and for an NXT its wiring and motor constant")
+        ->check(CLI::ExistingFile);
+    run->add_option("--truth", options.truth_url,
+                    "NXT: an emulated brick's ground truth, udp://HOST:PORT (printed by "
+                    "legofeup-nxt-emu); a real robot has none");
     run->add_option("--truth-port", options.truth_port,
                     "The simulator's ground-truth port (default: link port + 1)")
         ->check(CLI::Range(1, 65535));
@@ -48,10 +59,16 @@ int main(int argc, char** argv) {
         "config", "Print the configuration a run would use, as a TOML file to edit");
     add_config_options(config);
 
+    CalibrateOptions calibrate;
+    add_calibrate_subcommands(app, calibrate);
+
     CLI11_PARSE(app, argc, argv);
 
     if (app.got_subcommand("run")) {
         return run_command(options);
+    }
+    if (calibrate.requested()) {
+        return calibrate_command(calibrate);
     }
     if (app.got_subcommand("experiments")) {
         return experiments_command();

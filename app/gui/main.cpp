@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QPointer>
 #include <QScreen>
 #include <QTimer>
 #include <cstdio>
@@ -12,11 +13,15 @@
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "legofeup/ui/calibration/ir_calibration_dialog.hpp"
+#include "legofeup/ui/calibration/umbmark_dialog.hpp"
 #include "legofeup/ui/panels/experiment_panel.hpp"
 #include "legofeup/ui/session/session.hpp"
 #include "legofeup/ui/window/app_settings.hpp"
 #include "legofeup/ui/window/appearance.hpp"
+#include "legofeup/ui/window/connect_dialog.hpp"
 #include "legofeup/ui/window/main_window.hpp"
+#include "legofeup/ui/window/run_toolbar.hpp"
 #include "legofeup/version.hpp"
 
 namespace {
@@ -33,6 +38,7 @@ struct Options {
     QString screenshot;
     double screenshot_after = 5.0;
     int frame_log = 0;
+    QString open_dialog;
 };
 
 Options parse(const QApplication& app) {
@@ -69,8 +75,13 @@ Options parse(const QApplication& app) {
         QStringLiteral("frame-log"),
         QStringLiteral("Log the frame-time statistics every SECONDS to the standard error."),
         QStringLiteral("SECONDS"));
-    parser.addOptions(
-        {experiment, config, theme, large, start, speed, screenshot, after, frame_log});
+    const QCommandLineOption open_dialog(
+        QStringLiteral("open-dialog"),
+        QStringLiteral("Open a dialog at start: connect, ir-calibration or umbmark (with "
+                       "--screenshot, the picture is of the dialog)."),
+        QStringLiteral("NAME"));
+    parser.addOptions({experiment, config, theme, large, start, speed, screenshot, after, frame_log,
+                       open_dialog});
     parser.process(app);
 
     Options options;
@@ -80,6 +91,16 @@ Options parse(const QApplication& app) {
     options.large_text = parser.isSet(large);
     options.start = parser.isSet(start);
     options.screenshot = parser.value(screenshot);
+    options.open_dialog = parser.value(open_dialog);
+    if (!options.open_dialog.isEmpty() && options.open_dialog != QLatin1String("connect")
+        && options.open_dialog != QLatin1String("ir-calibration")
+        && options.open_dialog != QLatin1String("umbmark")) {
+        std::fprintf(stderr,
+                     "legofeup: --open-dialog = %s: expected connect, ir-calibration or "
+                     "umbmark\n",
+                     qPrintable(options.open_dialog));
+        std::exit(1);
+    }
     const auto number = [&](const QCommandLineOption& option, double fallback) {
         if (!parser.isSet(option)) {
             return fallback;
@@ -170,11 +191,10 @@ int main(int argc, char** argv) {
 
     QStringList notes;
     Session session(initial_config(options, notes));
-    ui::LinkChoice link;
-    link.kind = static_cast<ui::LinkKind>(
-        std::clamp(ui::preferences::kLinkKind.read(), 0, static_cast<int>(ui::LinkKind::External)));
-    link.address = ui::preferences::kLinkAddress.read();
-    link.speed = options.speed > 0.0 ? options.speed : ui::preferences::kSimulatorSpeed.read();
+    ui::LinkChoice link = ui::saved_link_choice();
+    if (options.speed > 0.0) {
+        link.speed = options.speed;
+    }
     session.setLinkChoice(link);
 
     ui::MainWindow window(session);
@@ -193,9 +213,18 @@ int main(int argc, char** argv) {
     if (options.start) {
         QTimer::singleShot(0, &session, &Session::start);
     }
+    QPointer<QWidget> dialog;
+    if (options.open_dialog == QLatin1String("connect")) {
+        dialog = window.runToolBar().openConnectDialog();
+    } else if (options.open_dialog == QLatin1String("ir-calibration")) {
+        dialog = window.openIrCalibration();
+    } else if (options.open_dialog == QLatin1String("umbmark")) {
+        dialog = window.openUmbmark();
+    }
     if (!options.screenshot.isEmpty()) {
         QTimer::singleShot(static_cast<int>(options.screenshot_after * 1000), &window, [&] {
-            const bool saved = window.grab().save(options.screenshot);
+            QWidget* shown = dialog ? dialog.data() : &window;
+            const bool saved = shown->grab().save(options.screenshot);
             std::fprintf(stderr, "legofeup: %s %s\n", saved ? "saved" : "could not save",
                          qPrintable(options.screenshot));
             std::fprintf(stderr, "legofeup: frame times (mean/p99/max): %s\n",

@@ -1,6 +1,7 @@
 #include "legofeup/lessons/link_run.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "legofeup/core/legofeup_loop.hpp"
 
@@ -17,6 +18,18 @@ double progress_of(const ResolvedRun& run, const LoopSnapshot& snapshot) {
 }
 
 }  // namespace
+
+std::optional<GroundTruth> UnknownTruth::truth_at(double time) {
+    GroundTruth truth;
+    truth.time = time;
+    truth.pose = {std::nan(""), std::nan(""), std::nan("")};
+    return truth;
+}
+
+bool truth_known(const GroundTruth& truth) {
+    return std::isfinite(truth.pose.x) && std::isfinite(truth.pose.y)
+           && std::isfinite(truth.pose.theta);
+}
 
 bool LinkStepper::step_without_frame(LegoFeupLoop& loop, const StepHandler& on_step) {
     // Due one period after the last frame, or after the last step without one.
@@ -81,7 +94,9 @@ RunResult run_with_link(const ResolvedRun& run, RobotLink& link, TruthSource& tr
             ++result.steps_without_truth;
         }
         if (last_truth) {
-            metrics.add(snapshot, last_truth->pose);
+            if (truth_known(*last_truth)) {
+                metrics.add(snapshot, last_truth->pose);
+            }
             if (observer != nullptr) {
                 observer->on_step(snapshot, *last_truth);
             }

@@ -40,7 +40,10 @@ comms::NoiseSettings noise_settings_of(const sim::RobotSpec& robot) {
 // The truth receiver subscribes in its constructor, before the reset below, so the truth of
 // time 0 is not missed.
 UdpRobotConnection::UdpRobotConnection(const ResolvedRun& run, const UdpTarget& target)
-    : control_(target.control), truth_(target.truth), link_(link_options(target)) {
+    : robot_(target.robot),
+      control_(target.control),
+      truth_(target.truth),
+      link_(link_options(target)) {
     check_control_period(control_, run, target);
     control_.set_noise(noise_settings_of(run.robot));
     link_.connect();
@@ -53,6 +56,18 @@ UdpRobotConnection::UdpRobotConnection(const ResolvedRun& run, const UdpTarget& 
 
 UdpRobotConnection::~UdpRobotConnection() {
     close();
+}
+
+void UdpRobotConnection::set_noise(const sim::RobotSpec& robot) {
+    control_.set_noise(noise_settings_of(robot));
+}
+
+void UdpRobotConnection::set_paused(bool paused) {
+    if (paused) {
+        control_.pause();
+    } else {
+        control_.resume();
+    }
 }
 
 void UdpRobotConnection::close() {

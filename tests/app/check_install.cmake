@@ -7,7 +7,7 @@ if(NOT result EQUAL 0)
     message(FATAL_ERROR "cmake --install failed: ${result}")
 endif()
 
-foreach(file bin/legofeup bin/legofeup-cli bin/legofeup-sim
+foreach(file bin/legofeup bin/legofeup-cli bin/legofeup-sim bin/legofeup-nxt-emu
              share/applications/legofeup-lab.desktop
              share/icons/hicolor/scalable/apps/legofeup-lab.svg)
     if(NOT EXISTS "${PREFIX}/${file}")

@@ -35,6 +35,17 @@ struct RunResult {
     std::uint64_t steps_without_truth = 0;  ///< steps whose truth never arrived (not in metrics)
 };
 
+/// A real robot's truth: nobody knows its pose. Every step gets a GroundTruth whose pose is
+/// NaN, so observers still see every step (the trace leaves the truth cells empty) and the
+/// metrics, which need a truth, stay empty.
+class UnknownTruth final : public TruthSource {
+  public:
+    std::optional<GroundTruth> truth_at(double time) override;
+};
+
+/// Whether `truth` is a known pose (not UnknownTruth's NaN).
+bool truth_known(const GroundTruth& truth);
+
 /// Called now and then with how far the run has got (0 … 1: laps and sides driven for a
 /// path, otherwise simulated time over the time limit) and the simulated time in seconds.
 using ProgressCallback = std::function<void(double fraction, double simulated)>;

@@ -10,6 +10,7 @@
 #include "legofeup/comms/truth_receiver.hpp"
 #include "legofeup/comms/udp_link.hpp"
 #include "legofeup/lessons/link_run.hpp"
+#include "legofeup/lessons/robot_connection.hpp"
 
 namespace legofeup::lessons {
 
@@ -29,20 +30,28 @@ UdpTarget parse_udp_target(const std::string& url, int truth_port, int control_p
 /// start; the first frame link() delivers is the reset one. Closing (or destroying) it stops
 /// the motors and releases the robot. Throws comms::LinkError with what went wrong and what
 /// to do.
-class UdpRobotConnection {
+class UdpRobotConnection final : public RobotConnection {
   public:
     UdpRobotConnection(const ResolvedRun& run, const UdpTarget& target);
-    ~UdpRobotConnection();
+    ~UdpRobotConnection() override;
     UdpRobotConnection(const UdpRobotConnection&) = delete;
     UdpRobotConnection& operator=(const UdpRobotConnection&) = delete;
 
     comms::UdpSimulatorLink& link() { return link_; }
     comms::TruthReceiver& truth() { return truth_; }
     comms::ControlClient& control() { return control_; }
+
+    RobotLink& robot_link() override { return link_; }
+    TruthSource* truth_source() override { return &truth_; }
+    void set_noise(const sim::RobotSpec& robot) override;
+    /// Pauses or resumes the server's clock.
+    void set_paused(bool paused) override;
     /// Stops the motors and releases the robot (once).
-    void close();
+    void close() override;
+    std::string describe() const override { return "udp://" + robot_.to_string(); }
 
   private:
+    comms::Endpoint robot_;
     comms::ControlClient control_;
     comms::TruthReceiver truth_;
     comms::UdpSimulatorLink link_;

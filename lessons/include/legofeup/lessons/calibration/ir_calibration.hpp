@@ -1,0 +1,51 @@
+#pragma once
+// Calibrating the Sharp IR sensor of a real robot: the paper's characteristic curve (eq. 2)
+// D = a·(C_M / (A + C_R) − b) fitted to measured pairs (A/D value A, distance D) by
+// Levenberg–Marquardt over C_M, C_R and b. a stays fixed: it is the unit of the fit (0.01 m
+// when the fit is written in centimetres) and only rescales C_M and b. See docs/calibration.md.
+
+#include <Eigen/Core>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "legofeup/core/sharp_ir.hpp"
+
+namespace legofeup::lessons {
+
+/// One measurement: the sensor's raw reading with a target at a known distance.
+struct IrCalibrationPoint {
+    double adc = 0.0;       ///< A, the raw 10-bit A/D value (0 … adc_max)
+    double distance = 0.0;  ///< D, metres from the sensor's front face to the target
+};
+
+struct IrFit {
+    /// The start curve with C_M, C_R and b replaced by the fitted values.
+    SharpIrCurve curve;
+    /// Per point, in the order given: measured − fitted distance, metres.
+    std::vector<double> residuals;
+    double rms_residual = 0.0;      ///< √(Σ residual² / n), metres
+    double max_abs_residual = 0.0;  ///< metres
+    int iterations = 0;             ///< Levenberg–Marquardt iterations (Jacobians evaluated)
+    /// true when the iteration stopped because it had converged (a step or the gradient
+    /// became negligible), false when it ran out of iterations.
+    bool converged = false;
+};
+
+/// ∂D/∂(C_M, C_R, b) of eq. 2 at `adc`: [a/(A + C_R), −a·C_M/(A + C_R)², −a]. One row of
+/// the fit's Jacobian (tests compare it with finite differences).
+Eigen::RowVector3d ir_curve_jacobian(double adc, const SharpIrCurve& curve);
+
+/// Fits C_M, C_R and b of eq. 2 to `points`, starting from `start` (whose a, ranges,
+/// fold-back and adc_max are kept). Throws InputError, listing every problem, for fewer than
+/// 4 points, an A outside 0 … adc_max, a distance that is not a positive finite number, fewer
+/// than 3 different A values (all identical included), or a start curve with A + C_R ≤ 0 at
+/// some point; the iteration never leaves the region where A + C_R > 0 at every point.
+IrFit fit_ir_curve(std::span<const IrCalibrationPoint> points, const SharpIrCurve& start);
+
+/// Reads measurements from a CSV file: the header `adc,distance_m`, then one `A,D` pair a
+/// line (D in metres); blank lines and everything after `#` are ignored. Throws InputError
+/// with path:line, the column, the value and the reason for every bad line.
+std::vector<IrCalibrationPoint> read_ir_points_csv(const std::string& path);
+
+}  // namespace legofeup::lessons

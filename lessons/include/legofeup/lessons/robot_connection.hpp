@@ -1,0 +1,38 @@
+#pragma once
+// A robot taken for a run, whatever it is: a simulator server over UDP, or a LEGO NXT (real
+// or emulated) over Bluetooth, a serial port or TCP. The CLI's runs and the GUI's live runs
+// talk to this, so the loop runs on the robot exactly as on the simulator.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "legofeup/comms/nxt/nxt_link.hpp"
+#include "legofeup/core/robot_link.hpp"
+#include "legofeup/core/truth_source.hpp"
+#include "legofeup/sim/robot_spec.hpp"
+
+namespace legofeup::lessons {
+
+class RobotConnection {
+  public:
+    virtual ~RobotConnection() = default;
+
+    /// Frames in, wheel commands out.
+    virtual RobotLink& robot_link() = 0;
+    /// Where the ground truth comes from; nullptr for a real robot (nobody knows its pose).
+    virtual TruthSource* truth_source() = 0;
+    /// A simulated robot's noise (E_d, E_b, slip, IR), live. A real robot ignores it.
+    virtual void set_noise(const sim::RobotSpec& robot) = 0;
+    /// A simulator stops its clock; a real robot stops its motors and ignores wheel commands
+    /// until resumed (its clock cannot stop: frames keep coming, the robot stands still).
+    virtual void set_paused(bool paused) = 0;
+    /// Stops the motors and lets the robot go (once; never throws).
+    virtual void close() = 0;
+    /// "udp://127.0.0.1:5600", "NXT at bt:00:16:53:01:02:03 (direct commands)".
+    virtual std::string describe() const = 0;
+    /// The NXT link's health (cycle time, timeouts, battery); nullopt for a simulator.
+    virtual std::optional<comms::nxt::LinkQuality> nxt_quality() const { return std::nullopt; }
+};
+
+}  // namespace legofeup::lessons

@@ -1,0 +1,102 @@
+#include "legofeup/lessons/nxt_run.hpp"
+
+#include "legofeup/comms/truth_receiver.hpp"
+#include "legofeup/lessons/input_error.hpp"
+
+namespace legofeup::lessons {
+namespace {
+
+/// An emulated brick's truth, matched by arrival rather than by time stamp: the brick's
+/// frames carry the host's clock, the truth stream the simulator's. The newest truth is at
+/// most one simulator period (10 ms in legofeup-nxt-emu) plus the downlink latency older
+/// than the readings it is compared with — a few millimetres at the robot's speeds.
+class LatestTruth final : public TruthSource {
+  public:
+    explicit LatestTruth(const comms::Endpoint& server) : receiver_(server) {}
+    std::optional<GroundTruth> truth_at(double time) override {
+        receiver_.poll();
+        std::optional<GroundTruth> truth = receiver_.latest();
+        if (truth) {
+            truth->time = time;
+        }
+        return truth;
+    }
+
+  private:
+    comms::TruthReceiver receiver_;
+};
+
+class NxtRobotConnection final : public RobotConnection {
+  public:
+    explicit NxtRobotConnection(const NxtTarget& target) : link_(target.link) {
+        if (target.truth) {
+            truth_.emplace(*target.truth);
+        }
+        link_.connect();
+    }
+    ~NxtRobotConnection() override { close(); }
+    NxtRobotConnection(const NxtRobotConnection&) = delete;
+    NxtRobotConnection& operator=(const NxtRobotConnection&) = delete;
+
+    RobotLink& robot_link() override { return link_; }
+    TruthSource* truth_source() override { return truth_ ? &*truth_ : nullptr; }
+    void set_noise(const sim::RobotSpec& /*robot*/) override {}
+    void set_paused(bool paused) override { link_.set_paused(paused); }
+    void close() override { link_.disconnect(); }
+    std::string describe() const override {
+        return "NXT at " + link_.options().address.to_string() + " ("
+               + (link_.options().mode == comms::nxt::CycleMode::Relay ? "relay program"
+                                                                       : "direct commands")
+               + ")";
+    }
+    std::optional<comms::nxt::LinkQuality> nxt_quality() const override { return link_.quality(); }
+
+  private:
+    std::optional<LatestTruth> truth_;
+    comms::nxt::NxtLink link_;
+};
+
+}  // namespace
+
+bool is_nxt_link(const std::string& text) {
+    return text.starts_with("bt:") || text.starts_with("serial:") || text.starts_with("tcp:");
+}
+
+NxtTarget parse_nxt_target(const std::string& link, bool relay, const std::string& truth_url) {
+    NxtTarget target;
+    try {
+        target.link.address = comms::nxt::parse_transport_address(link);
+    } catch (const std::invalid_argument& error) {
+        throw InputError({{"", 0, "--link", link, error.what()}});
+    }
+    target.link.mode = relay ? comms::nxt::CycleMode::Relay : comms::nxt::CycleMode::DirectCommands;
+    if (!truth_url.empty()) {
+        const auto truth = comms::parse_udp_url(truth_url);
+        if (!truth || truth->port == 0) {
+            throw InputError({{"", 0, "--truth", truth_url,
+                               "expected udp://a.b.c.d:port (an emulated brick's truth port, "
+                               "printed by legofeup-nxt-emu)"}});
+        }
+        target.truth = *truth;
+    }
+    return target;
+}
+
+void apply_robot_profile(const RobotProfile& profile, NxtTarget& target) {
+    comms::nxt::NxtWiring& wiring = target.link.wiring;
+    wiring.right_motor = static_cast<std::uint8_t>(profile.right_motor_port);
+    wiring.left_motor = static_cast<std::uint8_t>(profile.left_motor_port);
+    wiring.front_ir = static_cast<std::uint8_t>(profile.front_ir_port);
+    wiring.rear_ir = static_cast<std::uint8_t>(profile.rear_ir_port);
+    wiring.reversed_motors = profile.reversed_motors;
+    wiring.power_per_meter_per_second = profile.power_per_meter_per_second;
+    if (!profile.relay_program.empty()) {
+        target.link.relay_program = profile.relay_program;
+    }
+}
+
+std::unique_ptr<RobotConnection> connect_nxt(const ResolvedRun& /*run*/, const NxtTarget& target) {
+    return std::make_unique<NxtRobotConnection>(target);
+}
+
+}  // namespace legofeup::lessons
