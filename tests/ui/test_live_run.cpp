@@ -1,13 +1,21 @@
 // The GUI's run on its worker thread, against a simulator server on loopback: it runs, takes
 // changes between steps, drives by hand, pauses, and reports a dead link instead of hanging.
+// And against an emulated NXT over TCP, as the real robot is driven: the link's quality is
+// reported, a brick that goes away fails the run with the link's reason, and a new run
+// connects again.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
 
+#include "legofeup/comms/link_error.hpp"
 #include "legofeup/lessons/experiments.hpp"
+#include "legofeup/lessons/nxt_run.hpp"
+#include "legofeup/lessons/udp_run.hpp"
+#include "legofeup/nxtemu/emulated_nxt.hpp"
 #include "legofeup/simserver/sim_server.hpp"
 #include "legofeup/ui/session/live_run.hpp"
 
@@ -34,6 +42,14 @@ struct ServedRun {
         target = {options.bind.with_port(ports.robot), options.bind.with_port(ports.truth),
                   options.bind.with_port(ports.control)};
     }
+
+    LiveRun::ConnectionFactory connect() const { return udp(run, target); }
+
+    static LiveRun::ConnectionFactory udp(lessons::ResolvedRun run, lessons::UdpTarget target) {
+        return [run = std::move(run), target]() -> std::unique_ptr<lessons::RobotConnection> {
+            return std::make_unique<lessons::UdpRobotConnection>(run, target);
+        };
+    }
 };
 
 /// Collects samples until `done` holds for the collection (or 20 s of wall time pass).
@@ -52,7 +68,7 @@ std::vector<RunSample> collect_until(LiveRun& live, std::vector<RunSample>& samp
 TEST(LiveRun, RunsTheLoopAgainstTheServerWithTruthAndConsecutiveSteps) {
     ServedRun served("f");
     std::vector<RunSample> samples;
-    LiveRun live(served.run, served.target, [] {});
+    LiveRun live(served.run, served.connect(), [] {});
     collect_until(live, samples, [](const auto& s) { return s.size() >= 100; });
     ASSERT_GE(samples.size(), 100U);
     EXPECT_EQ(live.status().phase, RunPhase::Running);
@@ -71,7 +87,7 @@ TEST(LiveRun, RunsTheLoopAgainstTheServerWithTruthAndConsecutiveSteps) {
 TEST(LiveRun, NotifiesOncePerBatchNotOncePerSample) {
     ServedRun served("f");
     std::atomic<int> notifications{0};
-    LiveRun live(served.run, served.target, [&] { ++notifications; });
+    LiveRun live(served.run, served.connect(), [&] { ++notifications; });
     std::this_thread::sleep_for(1s);  // ~200 steps at 10×, none taken
     const int before = notifications.load();
     const std::size_t taken = live.take_samples().size();
@@ -82,7 +98,7 @@ TEST(LiveRun, NotifiesOncePerBatchNotOncePerSample) {
 TEST(LiveRun, KeyboardDrivingTakesOverFromThePathAndMovesTheRobotAtTheCommandedSpeed) {
     ServedRun served("f");
     std::vector<RunSample> samples;
-    LiveRun live(served.run, served.target, [] {});
+    LiveRun live(served.run, served.connect(), [] {});
     live.set_manual_driving(true);
     live.set_manual_command({0.0, 0.5});  // turn on the spot
     collect_until(live, samples, [](const auto& s) { return s.size() >= 60; });
@@ -98,7 +114,7 @@ TEST(LiveRun, KeyboardDrivingTakesOverFromThePathAndMovesTheRobotAtTheCommandedS
 TEST(LiveRun, ANewConfigurationTakesEffectAtTheNextStep) {
     ServedRun served("f");
     std::vector<RunSample> samples;
-    LiveRun live(served.run, served.target, [] {});
+    LiveRun live(served.run, served.connect(), [] {});
     collect_until(live, samples, [](const auto& s) { return s.size() >= 20; });
     lessons::RunConfig config = served.run.config;
     config.motion.v_ref = 0.05;
@@ -113,7 +129,7 @@ TEST(LiveRun, ANewConfigurationTakesEffectAtTheNextStep) {
 TEST(LiveRun, PauseFreezesSimulatedTimeAndResumeContinues) {
     ServedRun served("f");
     std::vector<RunSample> samples;
-    LiveRun live(served.run, served.target, [] {});
+    LiveRun live(served.run, served.connect(), [] {});
     collect_until(live, samples, [](const auto& s) { return s.size() >= 20; });
     live.set_paused(true);
     // The worker takes the request at its next step; wait for it (a loaded machine is slow).
@@ -143,10 +159,11 @@ TEST(LiveRun, ANoServerAddressFailsWithAMessageInsteadOfHanging) {
         port = served.server->ports().robot;
     }
     const comms::Endpoint nowhere{0x7F000001, port};
-    LiveRun live(run,
-                 {nowhere, nowhere.with_port(static_cast<std::uint16_t>(port + 1)),
-                  nowhere.with_port(static_cast<std::uint16_t>(port + 2))},
-                 [] {});
+    LiveRun live(
+        run,
+        ServedRun::udp(run, {nowhere, nowhere.with_port(static_cast<std::uint16_t>(port + 1)),
+                             nowhere.with_port(static_cast<std::uint16_t>(port + 2))}),
+        [] {});
     const auto deadline = std::chrono::steady_clock::now() + 10s;
     while (live.status().phase == RunPhase::Connecting
            && std::chrono::steady_clock::now() < deadline) {
@@ -155,6 +172,112 @@ TEST(LiveRun, ANoServerAddressFailsWithAMessageInsteadOfHanging) {
     const LiveRunStatus status = live.status();
     EXPECT_EQ(status.phase, RunPhase::Failed);
     EXPECT_NE(status.message.find("no reply"), std::string::npos) << status.message;
+}
+
+/// An emulated NXT on the run's simulator, served on a free loopback TCP port with
+/// Bluetooth's latency (30 ms each way), and the factory that connects to it as the GUI does.
+struct EmulatedBrick {
+    lessons::ResolvedRun run;
+    std::unique_ptr<nxtemu::EmulatedNxt> brick;
+    lessons::NxtTarget target;
+
+    explicit EmulatedBrick(const std::string& experiment)
+        : run(lessons::resolve(lessons::find_experiment(experiment)->config)) {
+        nxtemu::EmulatorOptions options;
+        options.run = run.config;
+        options.link.latency_up = 30ms;
+        options.link.latency_down = 30ms;
+        brick = std::make_unique<nxtemu::EmulatedNxt>(std::move(options));
+        const std::uint16_t port = brick->serve_tcp();
+        target.link.address = {comms::nxt::TransportKind::Tcp, "127.0.0.1", port};
+        target.truth = brick->truth_endpoint();
+    }
+
+    LiveRun::ConnectionFactory connect() const {
+        return [run = run, target = target] { return lessons::connect_nxt(run, target); };
+    }
+};
+
+/// Waits (up to `limit`) for the run's phase to leave Connecting and Running.
+LiveRunStatus wait_for_end(const LiveRun& live, std::chrono::seconds limit) {
+    const auto deadline = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < deadline) {
+        const LiveRunStatus status = live.status();
+        if (status.phase != RunPhase::Connecting && status.phase != RunPhase::Running) {
+            return status;
+        }
+        std::this_thread::sleep_for(20ms);
+    }
+    return live.status();
+}
+
+TEST(LiveRunOnNxt, AnEmulatedBrickOverTcpRunsTheLoopWithTheLinksQualityAndTruth) {
+    EmulatedBrick emulated("f");
+    std::vector<RunSample> samples;
+    LiveRun live(emulated.run, emulated.connect(), [] {});
+    // 30 ms each way: a cycle is one round trip (≈ 60 ms), so 40 frames take ~2.5 s.
+    collect_until(live, samples, [](const auto& s) { return s.size() >= 40; });
+    ASSERT_GE(samples.size(), 40U) << live.status().message;
+    const LiveRunStatus status = live.status();
+    EXPECT_EQ(status.phase, RunPhase::Running);
+    EXPECT_NE(status.link.find("tcp:127.0.0.1:"), std::string::npos) << status.link;
+    ASSERT_TRUE(status.nxt.has_value());
+    EXPECT_EQ(status.nxt->state, comms::nxt::LinkState::Connected);
+    EXPECT_GT(status.nxt->rate_hz(), 5.0);
+    EXPECT_LT(status.nxt->rate_hz(), 25.0);  // the latency is felt: not the simulator's pace
+    EXPECT_GE(status.nxt->cycles, 40U);
+    ASSERT_TRUE(status.nxt->battery_millivolts.has_value());
+    EXPECT_EQ(*status.nxt->battery_millivolts, 7800);  // the emulated firmware's default
+    const RunSample& last = samples.back();
+    ASSERT_TRUE(last.truth.has_value());  // the emulator's simulator tells the truth
+    EXPECT_TRUE(std::isfinite(last.nees));
+    // The robot moves along the path, and the estimate follows the truth.
+    const auto first = std::find_if(samples.begin(), samples.end(),
+                                    [](const RunSample& s) { return s.truth.has_value(); });
+    ASSERT_NE(first, samples.end());
+    EXPECT_GT(std::hypot(last.truth->pose.x - first->truth->pose.x,
+                         last.truth->pose.y - first->truth->pose.y),
+              0.05);
+    EXPECT_LT(std::hypot(last.snapshot.estimate.x() - last.truth->pose.x,
+                         last.snapshot.estimate.y() - last.truth->pose.y),
+              0.1);
+}
+
+TEST(LiveRunOnNxt, ABrickThatGoesAwayFailsTheRunNamingTheLinkAndANewRunReconnects) {
+    auto emulated = std::make_unique<EmulatedBrick>("f");
+    const std::string address = emulated->target.link.address.to_string();
+    std::vector<RunSample> samples;
+    {
+        LiveRun live(emulated->run, emulated->connect(), [] {});
+        collect_until(live, samples, [](const auto& s) { return s.size() >= 10; });
+        ASSERT_GE(samples.size(), 10U) << live.status().message;
+        emulated->brick->stop();  // the brick is switched off mid-run
+        const LiveRunStatus status = wait_for_end(live, 10s);
+        EXPECT_EQ(status.phase, RunPhase::Failed);
+        EXPECT_NE(status.message.find(address), std::string::npos) << status.message;
+        ASSERT_TRUE(status.nxt.has_value());
+        EXPECT_EQ(status.nxt->state, comms::nxt::LinkState::Failed);
+    }
+    // Reconnecting: a new run on a new brick, in the same process, works.
+    emulated = std::make_unique<EmulatedBrick>("f");
+    samples.clear();
+    LiveRun again(emulated->run, emulated->connect(), [] {});
+    collect_until(again, samples, [](const auto& s) { return s.size() >= 10; });
+    ASSERT_GE(samples.size(), 10U) << again.status().message;
+    EXPECT_EQ(again.status().phase, RunPhase::Running);
+    EXPECT_EQ(again.status().nxt->state, comms::nxt::LinkState::Connected);
+}
+
+TEST(LiveRunOnNxt, AConnectionThatCannotBeMadeFailsWithItsReason) {
+    LiveRun live(
+        lessons::resolve(lessons::find_experiment("f")->config),
+        []() -> std::unique_ptr<lessons::RobotConnection> {
+            throw comms::LinkError("tcp:127.0.0.1:9: connection refused");
+        },
+        [] {});
+    const LiveRunStatus status = wait_for_end(live, 5s);
+    EXPECT_EQ(status.phase, RunPhase::Failed);
+    EXPECT_EQ(status.message, "tcp:127.0.0.1:9: connection refused");
 }
 
 }  // namespace

@@ -169,6 +169,18 @@ QCustomPlot* PlotsPanel::buildPlot(PlotKind kind) {
         addReferenceLine(kind, 0, range, ir_range_label(range));
     }
 
+    if (kind == PlotKind::PositionError || kind == PlotKind::HeadingError
+        || kind == PlotKind::Nees) {
+        auto* note = new QCPItemText(plot);
+        note->position->setType(QCPItemPosition::ptAxisRectRatio);
+        note->position->setCoords(0.5, 0.5);
+        note->setText(
+            tr("No ground truth on this link: a real robot's pose is unknown, "
+               "so there is no error to show"));
+        note->setVisible(false);
+        no_truth_[index_of(kind)] = note;
+    }
+
     connect(plot, &QCustomPlot::beforeReplot, this, [this, kind] { onBeforeReplot(kind); });
     connect(plot, &QCustomPlot::afterReplot, this, [this] { onAfterReplot(); });
     return plot;
@@ -222,6 +234,7 @@ void PlotsPanel::historyRestarted() {
     first_time_ = 0.0;
     last_time_ = 0.0;
     clearGraphs();
+    showNoTruth(false);
     const double range = history_.scene().ir_max_range;
     moveReferenceLine(PlotKind::IrDistances, 0, range, ir_range_label(range));
     updateAxes();
@@ -277,8 +290,18 @@ void PlotsPanel::samplesAppended(int first, int count) {
     }
     last_time_ = samples[end - 1].snapshot.time;
     taken_ = end;
+    showNoTruth(!samples[end - 1].truth.has_value());
     updateAxes();
     requestReplots();
+}
+
+void PlotsPanel::showNoTruth(bool shown) {
+    no_truth_shown_ = shown;
+    for (QCPItemText* note : no_truth_) {
+        if (note != nullptr) {
+            note->setVisible(shown);
+        }
+    }
 }
 
 void PlotsPanel::setTimeWindow(double seconds) {

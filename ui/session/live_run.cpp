@@ -1,14 +1,41 @@
 #include "legofeup/ui/session/live_run.hpp"
 
 #include <exception>
+#include <stdexcept>
 #include <utility>
 
+#include "legofeup/lessons/link_run.hpp"
+#include "legofeup/lessons/udp_run.hpp"  // noise_settings_of
 #include "legofeup/ui/session/run_samples.hpp"
 
 namespace legofeup::ui {
-LiveRun::LiveRun(lessons::ResolvedRun run, lessons::UdpTarget target, Notify notify)
+namespace {
+
+/// Why a connection's NXT link failed, naming the link; empty while it has not.
+std::string link_failure(const lessons::RobotConnection& connection) {
+    const std::optional<comms::nxt::LinkQuality> quality = connection.nxt_quality();
+    if (!quality || quality->state != comms::nxt::LinkState::Failed) {
+        return {};
+    }
+    const std::string link = connection.describe();  // "NXT at tcp:127.0.0.1:5700 (…)"
+    if (quality->last_error.empty()) {
+        return link + ": the link failed";
+    }
+    // The link's own message usually names its address already: say it once.
+    const std::size_t at = link.find(" at ");
+    const std::string address =
+        at == std::string::npos ? link : link.substr(at + 4, link.find(" (", at) - at - 4);
+    if (quality->last_error.find(address) != std::string::npos) {
+        return quality->last_error;
+    }
+    return link + ": " + quality->last_error;
+}
+
+}  // namespace
+
+LiveRun::LiveRun(lessons::ResolvedRun run, ConnectionFactory connect, Notify notify)
     : run_(std::move(run)),
-      target_(target),
+      connect_(std::move(connect)),
       notify_(std::move(notify)),
       worker_([this](const std::stop_token& stop) { work(stop); }) {}
 
@@ -56,13 +83,15 @@ void LiveRun::set_phase(RunPhase phase, std::string message) {
     notify_();
 }
 
-void LiveRun::publish(RunSample sample, std::uint64_t frames_missing) {
+void LiveRun::publish(RunSample sample, std::uint64_t frames_missing,
+                      std::optional<comms::nxt::LinkQuality> nxt) {
     bool first = false;
     {
         const std::lock_guard lock(mutex_);
         status_.steps = sample.snapshot.step;
         status_.time = sample.snapshot.time;
         status_.frames_missing = frames_missing;
+        status_.nxt = std::move(nxt);
         first = pending_.empty();
         pending_.push_back(std::move(sample));
     }
@@ -76,14 +105,19 @@ bool LiveRun::is_over(const LoopSnapshot& snapshot) const {
     return !manual_ && (snapshot.controller.finished || snapshot.time >= run_.max_duration);
 }
 
-void LiveRun::apply(Requests requests, LegoFeupLoop& loop,
-                    lessons::UdpRobotConnection& connection) {
+void LiveRun::check_link(const lessons::RobotConnection& connection) {
+    if (std::string why = link_failure(connection); !why.empty()) {
+        throw std::runtime_error(why);
+    }
+}
+
+void LiveRun::apply(Requests requests, LegoFeupLoop& loop, lessons::RobotConnection& connection) {
     if (requests.run) {
         // Validated by the session already: reconfigure() cannot refuse it.
         loop.reconfigure(requests.run->loop);
-        const comms::NoiseSettings noise = lessons::noise_settings_of(requests.run->robot);
-        if (noise != lessons::noise_settings_of(run_.robot)) {
-            connection.control().set_noise(noise);
+        if (lessons::noise_settings_of(requests.run->robot)
+            != lessons::noise_settings_of(run_.robot)) {
+            connection.set_noise(requests.run->robot);  // a real robot ignores it
         }
         run_ = std::move(*requests.run);
     }
@@ -95,28 +129,37 @@ void LiveRun::apply(Requests requests, LegoFeupLoop& loop,
         loop.set_manual_command(*requests.command);
     }
     if (requests.paused) {
-        if (*requests.paused) {
-            connection.control().pause();
-        } else {
-            connection.control().resume();
-        }
+        connection.set_paused(*requests.paused);
         set_phase(*requests.paused ? RunPhase::Paused : RunPhase::Running);
     }
 }
 
 void LiveRun::work(const std::stop_token& stop) {
+    std::unique_ptr<lessons::RobotConnection> connection;
     try {
-        lessons::UdpRobotConnection connection(run_, target_);
+        connection = connect_();
+        if (!connection) {
+            throw std::runtime_error("no robot to connect to");
+        }
+        {
+            const std::lock_guard lock(mutex_);
+            status_.link = connection->describe();
+            status_.nxt = connection->nxt_quality();
+        }
         LegoFeupLoop loop(run_.loop);
         lessons::LinkStepper stepper(run_.config.simulator.control_period);
+        TruthSource* const truth_source = connection->truth_source();  // null: a real robot
         std::optional<GroundTruth> last_truth;
         set_phase(RunPhase::Running);
 
         const auto on_step = [&](const LoopSnapshot& snapshot) {
-            if (auto truth = connection.truth().truth_at(snapshot.time)) {
-                last_truth = truth;
+            if (truth_source != nullptr) {
+                if (auto truth = truth_source->truth_at(snapshot.time)) {
+                    last_truth = truth;
+                }
             }
-            publish(make_run_sample(snapshot, last_truth), stepper.frames_missing());
+            publish(make_run_sample(snapshot, last_truth), stepper.frames_missing(),
+                    connection->nxt_quality());
             return is_over(snapshot);
         };
         while (!stop.stop_requested()) {
@@ -125,21 +168,33 @@ void LiveRun::work(const std::stop_token& stop) {
                 const std::lock_guard lock(mutex_);
                 requests = std::exchange(requests_, {});
             }
-            apply(std::move(requests), loop, connection);
-            const bool over = stepper.advance(loop, connection.link(), on_step);
+            apply(std::move(requests), loop, *connection);
+            const bool over = stepper.advance(loop, connection->robot_link(), on_step);
+            check_link(*connection);
             if (stepper.stepped()) {
-                connection.link().send_command(loop.snapshot().wheels);
+                connection->robot_link().send_command(loop.snapshot().wheels);
             }
             if (over) {
-                connection.close();
+                connection->close();
                 set_phase(RunPhase::Finished);
                 return;
             }
         }
-        connection.close();
+        connection->close();
         set_phase(RunPhase::Stopped);
     } catch (const std::exception& error) {
-        set_phase(RunPhase::Failed, error.what());
+        // The link's own reason (an NXT that stopped answering) says more than the runner's
+        // "no frame for 40 periods"; closing tries once more to stop the motors.
+        std::string message = error.what();
+        if (connection) {
+            if (std::string why = link_failure(*connection); !why.empty()) {
+                message = std::move(why);
+            }
+            connection->close();
+            const std::lock_guard lock(mutex_);
+            status_.nxt = connection->nxt_quality();
+        }
+        set_phase(RunPhase::Failed, std::move(message));
     }
 }
 

@@ -10,7 +10,12 @@
 #include "legofeup/comms/endpoint.hpp"
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/nxt_run.hpp"
+#include "legofeup/lessons/robot_profile.hpp"
+#include "legofeup/lessons/udp_run.hpp"
+#include "legofeup/nxtemu/emulated_nxt.hpp"
 #include "legofeup/simserver/sim_server.hpp"
+#include "legofeup/ui/session/nxt_address.hpp"
 #include "legofeup/ui/session/run_samples.hpp"
 #include "legofeup/ui/write_atomically.hpp"
 
@@ -32,6 +37,15 @@ QStringList problem_lines(const lessons::InputError& error) {
 bool starts_with_any(const std::string& key, std::initializer_list<std::string_view> prefixes) {
     return std::any_of(prefixes.begin(), prefixes.end(),
                        [&](std::string_view prefix) { return key.starts_with(prefix); });
+}
+
+/// A sample's truth, or for a robot without one (a real NXT) the CLI's unknown truth: the
+/// trace's truth and NEES cells stay empty.
+GroundTruth truth_or_unknown(const RunSample& sample) {
+    if (sample.truth) {
+        return *sample.truth;
+    }
+    return *lessons::UnknownTruth().truth_at(sample.snapshot.time);
 }
 
 }  // namespace
@@ -85,6 +99,7 @@ Session::~Session() {
     run_.reset();      // joins the worker, which may still notify us until then
     reapers_.clear();  // and the retired ones
     embedded_.reset();
+    emulated_nxt_.reset();
 }
 
 bool Session::running() const {
@@ -101,7 +116,7 @@ QStringList Session::setConfig(const lessons::RunConfig& config) {
         return problem_lines(error);
     }
     if (run_ && running()) {
-        run_->reconfigure(resolved_);
+        run_->reconfigure(forThisRobot(resolved_));
     } else {
         history_.restart(scene_of(resolved_));
         emit historyRestarted();
@@ -125,6 +140,7 @@ QString Session::changeSetting(const lessons::Setting& setting,
 
 void Session::setLinkChoice(const LinkChoice& choice) {
     link_ = choice;
+    emit linkChoiceChanged();
 }
 
 QString Session::saveConfig(const QString& path) const {
@@ -144,9 +160,7 @@ QString Session::exportTrace(const QString& path) const {
     std::ostringstream text;
     lessons::TraceCsvWriter writer(text, resolved_.loop);
     for (const RunSample& sample : history_.samples()) {
-        if (sample.truth) {
-            writer.on_step(sample.snapshot, *sample.truth);
-        }
+        writer.on_step(sample.snapshot, truth_or_unknown(sample));
     }
     return write_atomically(path, QByteArray::fromStdString(text.str()));
 }
@@ -204,38 +218,101 @@ void Session::restartHistory() {
     emit historyRestarted();
 }
 
-std::optional<lessons::UdpTarget> Session::prepareTarget() {
+std::optional<LiveRun::ConnectionFactory> Session::prepareConnection() {
+    embedded_.reset();
+    emulated_nxt_.reset();
+    profile_.reset();
+    if (link_.kind == LinkKind::Nxt) {
+        return prepareNxt();
+    }
+    lessons::UdpTarget target;
     if (link_.kind == LinkKind::External) {
         try {
-            return lessons::parse_udp_target(link_.address.toStdString(), 0, 0);
+            target = lessons::parse_udp_target(link_.address.toStdString(), 0, 0);
         } catch (const lessons::InputError& error) {
             emit problem(problem_lines(error).join('\n'));
             return std::nullopt;
         }
+    } else {
+        // The embedded simulator: a fresh server per run, on free loopback ports, so it
+        // always has this run's world, robot and timing.
+        simserver::SimServerOptions options;
+        options.bind = comms::Endpoint{0x7F000001, 0};
+        options.time_scale = link_.speed;
+        try {
+            embedded_ = std::make_unique<simserver::SimServer>(resolved_.world, resolved_.robot,
+                                                               resolved_.config.simulator,
+                                                               resolved_.config.seed, options);
+        } catch (const std::exception& error) {
+            emit problem(tr("The embedded simulator did not start: %1").arg(error.what()));
+            return std::nullopt;
+        }
+        embedded_->start();
+        const simserver::BoundPorts ports = embedded_->ports();
+        target = {options.bind.with_port(ports.robot), options.bind.with_port(ports.truth),
+                  options.bind.with_port(ports.control)};
     }
-    if (link_.kind == LinkKind::Nxt) {
-        emit problem(tr("The NXT link is not available in this version."));
-        return std::nullopt;
+    return [run = resolved_, target]() -> std::unique_ptr<lessons::RobotConnection> {
+        return std::make_unique<lessons::UdpRobotConnection>(run, target);
+    };
+}
+
+lessons::ResolvedRun Session::forThisRobot(lessons::ResolvedRun run) const {
+    if (profile_) {
+        lessons::apply_robot_profile(*profile_, run.loop);  // its odometry and IR curve
     }
-    // The embedded simulator: a fresh server per run, on free loopback ports, so it always
-    // has this run's world, robot and timing.
-    embedded_.reset();
-    simserver::SimServerOptions options;
-    options.bind = comms::Endpoint{0x7F000001, 0};
-    options.time_scale = link_.speed;
+    return run;
+}
+
+std::optional<LiveRun::ConnectionFactory> Session::prepareNxt() {
+    lessons::NxtTarget target;
+    target.link.mode =
+        link_.relay ? comms::nxt::CycleMode::Relay : comms::nxt::CycleMode::DirectCommands;
+    if (!link_.robot_profile.isEmpty()) {
+        try {
+            profile_ = lessons::load_robot_profile(link_.robot_profile.toStdString());
+        } catch (const lessons::InputError& error) {
+            emit problem(tr("The robot profile %1 did not load:\n%2")
+                             .arg(link_.robot_profile, problem_lines(error).join('\n')));
+            return std::nullopt;
+        }
+        lessons::apply_robot_profile(*profile_, target);  // its wiring and motor constant
+    }
+    if (link_.emulated) {
+        if (!startEmulatedNxt(target)) {
+            return std::nullopt;
+        }
+    } else {
+        try {
+            const lessons::NxtTarget typed = lessons::parse_nxt_target(
+                normalized_nxt_address(link_.nxt_address).toStdString(), link_.relay, "");
+            target.link.address = typed.link.address;
+        } catch (const lessons::InputError& error) {
+            emit problem(tr("The NXT's address: %1").arg(problem_lines(error).join('\n')));
+            return std::nullopt;
+        }
+    }
+    return [run = forThisRobot(resolved_), target]() { return lessons::connect_nxt(run, target); };
+}
+
+bool Session::startEmulatedNxt(lessons::NxtTarget& target) {
+    const comms::nxt::NxtWiring& wiring = target.link.wiring;
+    nxtemu::EmulatorOptions options;
+    options.run = config_;  // the simulated robot, world, noise and seed of this run
+    options.wiring = {wiring.right_motor, wiring.left_motor, wiring.front_ir, wiring.rear_ir,
+                      wiring.reversed_motors};
+    options.firmware.relay_program = target.link.relay_program;
     try {
-        embedded_ = std::make_unique<simserver::SimServer>(resolved_.world, resolved_.robot,
-                                                           resolved_.config.simulator,
-                                                           resolved_.config.seed, options);
+        emulated_nxt_ = std::make_unique<nxtemu::EmulatedNxt>(std::move(options));
+        const std::uint16_t port = emulated_nxt_->serve_tcp();
+        target.link.address = {comms::nxt::TransportKind::Tcp, "127.0.0.1", port};
+        target.truth = emulated_nxt_->truth_endpoint();
     } catch (const std::exception& error) {
-        emit problem(tr("The embedded simulator did not start: %1").arg(error.what()));
-        return std::nullopt;
+        emulated_nxt_.reset();
+        emit problem(tr("The emulated brick did not start: %1").arg(error.what()));
+        return false;
     }
-    embedded_->start();
-    const simserver::BoundPorts ports = embedded_->ports();
-    return lessons::UdpTarget{options.bind.with_port(ports.robot),
-                              options.bind.with_port(ports.truth),
-                              options.bind.with_port(ports.control)};
+    return true;
 }
 
 void Session::retireRun() {
@@ -259,15 +336,16 @@ void Session::start() {
         return;
     }
     retireRun();
-    const std::optional<lessons::UdpTarget> target = prepareTarget();
-    if (!target) {
+    std::optional<LiveRun::ConnectionFactory> connect = prepareConnection();
+    if (!connect) {
         return;
     }
     restartHistory();
     status_ = {};
     phase_ = RunPhase::Connecting;
     emit phaseChanged(phase_);
-    run_ = std::make_unique<LiveRun>(resolved_, *target, [this] { workerNotified(); });
+    run_ = std::make_unique<LiveRun>(forThisRobot(resolved_), std::move(*connect),
+                                     [this] { workerNotified(); });
     if (manual_) {
         run_->set_manual_driving(true);
     }
@@ -283,6 +361,7 @@ void Session::stop() {
 void Session::reset() {
     retireRun();
     embedded_.reset();
+    emulated_nxt_.reset();
     closeTrace();
     status_ = {};
     phase_ = RunPhase::Idle;
@@ -344,9 +423,7 @@ void Session::drain() {
     if (!batch.empty()) {
         if (trace_writer_) {
             for (const RunSample& sample : batch) {
-                if (sample.truth) {
-                    trace_writer_->on_step(sample.snapshot, *sample.truth);
-                }
+                trace_writer_->on_step(sample.snapshot, truth_or_unknown(sample));
             }
             trace_file_->flush();
         }

@@ -2,11 +2,52 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <algorithm>
 
 namespace legofeup::ui {
 
 QString last_config_path() {
     return QFileInfo(QSettings().fileName()).dir().filePath(QStringLiteral("last-config.toml"));
+}
+
+LinkChoice saved_link_choice() {
+    LinkChoice choice;
+    choice.kind = static_cast<LinkKind>(
+        std::clamp(preferences::kLinkKind.read(), 0, static_cast<int>(LinkKind::Nxt)));
+    choice.address = preferences::kLinkAddress.read();
+    choice.speed = preferences::kSimulatorSpeed.read();
+    choice.nxt_address = preferences::kNxtAddress.read();
+    choice.relay = preferences::kNxtRelay.read();
+    choice.robot_profile = preferences::kNxtProfile.read();
+    choice.emulated = preferences::kNxtEmulated.read();
+    return choice;
+}
+
+void save_link_choice(const LinkChoice& choice) {
+    preferences::kLinkKind.write(static_cast<int>(choice.kind));
+    preferences::kLinkAddress.write(choice.address);
+    preferences::kSimulatorSpeed.write(choice.speed);
+    preferences::kNxtAddress.write(choice.nxt_address);
+    preferences::kNxtRelay.write(choice.relay);
+    preferences::kNxtProfile.write(choice.robot_profile);
+    preferences::kNxtEmulated.write(choice.emulated);
+}
+
+QStringList with_recent_robot(QStringList recent, const QString& address) {
+    const QString trimmed = address.trimmed();
+    if (trimmed.isEmpty()) {
+        return recent;
+    }
+    recent.removeAll(trimmed);
+    recent.prepend(trimmed);
+    while (recent.size() > kMaxRecentRobots) {
+        recent.removeLast();
+    }
+    return recent;
+}
+
+void remember_robot(const QString& address) {
+    preferences::kRecentRobots.write(with_recent_robot(preferences::kRecentRobots.read(), address));
 }
 
 }  // namespace legofeup::ui

@@ -12,14 +12,18 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScreen>
+#include <QScrollArea>
 #include <QStatusBar>
 #include <QTimer>
 #include <type_traits>
 
 #include "legofeup/ui/arena/arena_view.hpp"
+#include "legofeup/ui/calibration/ir_calibration_dialog.hpp"
+#include "legofeup/ui/calibration/umbmark_dialog.hpp"
 #include "legofeup/ui/panels/config_panel.hpp"
 #include "legofeup/ui/panels/covariance_view.hpp"
 #include "legofeup/ui/panels/experiment_panel.hpp"
+#include "legofeup/ui/panels/robot_status.hpp"
 #include "legofeup/ui/plots/plots_panel.hpp"
 #include "legofeup/ui/session/session.hpp"
 #include "legofeup/ui/window/app_settings.hpp"
@@ -49,6 +53,21 @@ QDockWidget* dock(QMainWindow* window, const QString& title, const QString& name
     return widget;
 }
 
+/// The window's one dialog of this kind, brought to the front, or a new one (not blocking;
+/// deleted when closed).
+template <class Dialog>
+Dialog* open_one(QMainWindow& window, const Session& session) {
+    if (auto* open = window.findChild<Dialog*>()) {
+        open->raise();
+        open->activateWindow();
+        return open;
+    }
+    auto* dialog = new Dialog(session, &window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+    return dialog;
+}
+
 }  // namespace
 
 MainWindow::MainWindow(Session& session, QWidget* parent) : QMainWindow(parent), session_(session) {
@@ -71,6 +90,7 @@ void MainWindow::buildDocks() {
     config_ = new ConfigPanel(session_, this);
     experiment_ = new ExperimentPanel(session_, this);
     covariance_ = new CovarianceView(session_.history(), this);
+    robot_ = new RobotStatusView(session_, this);
     arena_->setEllipseConfidence(
         static_cast<EllipseConfidence>(std::clamp(preferences::kEllipseConfidence.read(), 0, 2)));
     arena_->setFollowRobot(preferences::kFollowRobot.read());
@@ -83,6 +103,14 @@ void MainWindow::buildDocks() {
     dock(this, tr("Covariance P"), QStringLiteral("covarianceDock"), covariance_,
          Qt::LeftDockWidgetArea);
     dock(this, tr("Configuration"), QStringLiteral("configDock"), config_, Qt::RightDockWidgetArea);
+    // Below the configuration; shown with an NXT (and whenever asked for, View ▸ Robot).
+    auto* robot_scroll = new QScrollArea(this);  // a long failure reason scrolls, never cut
+    robot_scroll->setWidget(robot_);
+    robot_scroll->setWidgetResizable(true);
+    robot_scroll->setFrameShape(QFrame::NoFrame);
+    QDockWidget* robot_dock =
+        dock(this, tr("Robot"), QStringLiteral("robotDock"), robot_scroll, Qt::RightDockWidgetArea);
+    robot_dock->setVisible(session_.linkChoice().kind == LinkKind::Nxt);
     dock(this, tr("Plots"), QStringLiteral("plotsDock"), plots_, Qt::BottomDockWidgetArea);
     setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
@@ -98,6 +126,14 @@ void MainWindow::buildDocks() {
     wire(covariance_);
     connect(&session_, &Session::samplesAppended, this, &MainWindow::updateStatus);
     connect(&session_, &Session::phaseChanged, this, &MainWindow::updateStatus);
+    connect(&session_, &Session::samplesAppended, robot_, &RobotStatusView::refresh);
+    connect(&session_, &Session::phaseChanged, robot_, &RobotStatusView::refresh);
+    connect(&session_, &Session::linkChoiceChanged, this, [this, robot_dock] {
+        robot_->refresh();
+        if (session_.linkChoice().kind == LinkKind::Nxt) {
+            showRobotDock(robot_dock);
+        }
+    });
     connect(&session_, &Session::problem, this,
             [this](const QString& message) { statusBar()->showMessage(message, 15000); });
 
@@ -107,6 +143,10 @@ void MainWindow::buildDocks() {
     connect(files_, &FileActions::done, this,
             [this](const QString& note) { statusBar()->showMessage(note, 10000); });
 
+    robot_line_ = new QLabel(this);
+    robot_line_->setObjectName(QStringLiteral("robotLine"));
+    robot_line_->setVisible(false);
+    statusBar()->addPermanentWidget(robot_line_);
     status_ = new QLabel(this);
     status_->setObjectName(QStringLiteral("runStatus"));
     statusBar()->addPermanentWidget(status_);
@@ -143,11 +183,23 @@ void MainWindow::buildMenus() {
     run->addAction(toolbar_->stopAction());
     run->addAction(toolbar_->resetAction());
     run->addSeparator();
+    reconnect_ = run->addAction(tr("Re&connect"));
+    reconnect_->setObjectName(QStringLiteral("reconnectAction"));
+    reconnect_->setToolTip(tr("Connect again with the same robot after a failure"));
+    connect(reconnect_, &QAction::triggered, &session_, &Session::start);
+    run->addAction(toolbar_->connectAction());
+    run->addSeparator();
     QAction* manual = run->addAction(tr("Drive with the &keyboard"));
     manual->setCheckable(true);
     manual->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
     connect(manual, &QAction::toggled, &session_, &Session::setManualDriving);
     connect(&session_, &Session::manualDrivingChanged, manual, &QAction::setChecked);
+
+    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    tools->addAction(toolbar_->connectAction());
+    tools->addSeparator();
+    tools->addAction(tr("&IR sensor calibration…"), this, &MainWindow::openIrCalibration);
+    tools->addAction(tr("&Odometry calibration (UMBmark)…"), this, &MainWindow::openUmbmark);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QMenu* confidence = view->addMenu(tr("Covariance &ellipse"));
@@ -254,8 +306,30 @@ QString MainWindow::frameTimesText() const {
            + stats_text("plots", plots_->frameStats());
 }
 
+void MainWindow::showRobotDock(QDockWidget* robot_dock) {
+    const bool was_visible = robot_dock->isVisible();
+    robot_dock->show();
+    robot_dock->raise();
+    if (!was_visible) {
+        // Tall enough for its rows (the configuration above it scrolls anyway).
+        resizeDocks({robot_dock}, {robot_->sizeHint().height() + 40}, Qt::Vertical);
+    }
+}
+
+IrCalibrationDialog* MainWindow::openIrCalibration() {
+    return open_one<IrCalibrationDialog>(*this, session_);
+}
+
+UmbmarkDialog* MainWindow::openUmbmark() {
+    return open_one<UmbmarkDialog>(*this, session_);
+}
+
 void MainWindow::updateStatus() {
     const LiveRunStatus& status = session_.status();
+    const QString robot = robot_status_line(session_.phase(), status);
+    robot_line_->setText(robot);
+    robot_line_->setVisible(!robot.isEmpty());
+    reconnect_->setEnabled(session_.phase() == RunPhase::Failed);
     QString text = phase_text(session_.phase());
     if (session_.phase() != RunPhase::Idle) {
         text += tr(" · t = %1 s · step %2").arg(status.time, 0, 'f', 1).arg(status.steps);
@@ -301,9 +375,7 @@ void MainWindow::savePreferences() const {
     preferences::kFollowRobot.write(arena_->followRobot());
     preferences::kPlotWindow.write(plots_->timeWindow());
     preferences::kShowFrameTimes.write(frame_times_->isChecked());
-    preferences::kLinkKind.write(static_cast<int>(session_.linkChoice().kind));
-    preferences::kLinkAddress.write(session_.linkChoice().address);
-    preferences::kSimulatorSpeed.write(session_.linkChoice().speed);
+    save_link_choice(session_.linkChoice());
     preferences::kExperiment.write(experiment_->currentExperiment());
     QDir().mkpath(QFileInfo(last_config_path()).path());
     session_.saveConfig(last_config_path());

@@ -5,11 +5,12 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
-#include <QStandardItemModel>
 #include <QStyle>
+#include <QToolButton>
 #include <array>
 
 #include "legofeup/ui/session/session.hpp"
+#include "legofeup/ui/window/connect_dialog.hpp"
 
 namespace legofeup::ui {
 namespace {
@@ -60,12 +61,10 @@ RunToolBar::RunToolBar(Session& session, QWidget* parent)
     link_->addItem(tr("Embedded simulator"));
     link_->addItem(tr("External legofeup-sim"));
     link_->addItem(tr("NXT over Bluetooth"));
-    // The NXT link is its own milestone: listed so students know it exists, not selectable.
-    if (auto* model = qobject_cast<QStandardItemModel*>(link_->model())) {
-        model->item(static_cast<int>(LinkKind::Nxt))->setEnabled(false);
-        model->item(static_cast<int>(LinkKind::Nxt))
-            ->setToolTip(tr("Not available yet: arrives with the NXT Bluetooth driver"));
-    }
+    link_->setItemData(static_cast<int>(LinkKind::Nxt),
+                       tr("A LEGO NXT over Bluetooth, a serial port or TCP, or an emulated brick "
+                          "to rehearse with: opens the connect dialog"),
+                       Qt::ToolTipRole);
     link_->setCurrentIndex(static_cast<int>(session_.linkChoice().kind));
     addWidget(link_);
     address_ = new QLineEdit(session_.linkChoice().address, this);
@@ -81,23 +80,73 @@ RunToolBar::RunToolBar(Session& session, QWidget* parent)
     }
     speed_->setCurrentIndex(std::max(0, speed_->findData(session_.linkChoice().speed)));
     speed_action_ = addWidget(speed_);
-    connect(link_, &QComboBox::currentIndexChanged, this, &RunToolBar::linkEdited);
+    connect_ = new QAction(tr("&Connect to an NXT…"), this);
+    connect_->setObjectName(QStringLiteral("connectNxt"));
+    connect_->setToolTip(
+        tr("Choose the NXT: its address, the relay program, a robot profile, "
+           "or an emulated brick"));
+    connect(connect_, &QAction::triggered, this, &RunToolBar::openConnectDialog);
+    nxt_ = new QToolButton(this);
+    nxt_->setObjectName(QStringLiteral("nxtButton"));
+    nxt_->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    nxt_->setToolTip(connect_->toolTip());
+    connect(nxt_, &QToolButton::clicked, this, &RunToolBar::openConnectDialog);
+    nxt_action_ = addWidget(nxt_);
+    connect(link_, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (static_cast<LinkKind>(index) == LinkKind::Nxt
+            && session_.linkChoice().kind != LinkKind::Nxt) {
+            openConnectDialog();  // the NXT becomes the robot once the dialog is accepted
+            return;
+        }
+        linkEdited();
+    });
     connect(address_, &QLineEdit::editingFinished, this, &RunToolBar::linkEdited);
     connect(speed_, &QComboBox::currentIndexChanged, this, &RunToolBar::linkEdited);
 
     connect(&session_, &Session::phaseChanged, this, &RunToolBar::phaseChanged);
+    connect(&session_, &Session::linkChoiceChanged, this, &RunToolBar::showLinkFields);
     phaseChanged(session_.phase());
     linkEdited();
 }
 
 void RunToolBar::linkEdited() {
-    LinkChoice choice;
+    LinkChoice choice = session_.linkChoice();  // keeps the NXT's fields
     choice.kind = static_cast<LinkKind>(link_->currentIndex());
     choice.address = address_->text().trimmed();
     choice.speed = speed_->currentData().toDouble();
     session_.setLinkChoice(choice);
+    showLinkFields();
+}
+
+void RunToolBar::showLinkFields() {
+    const LinkChoice& choice = session_.linkChoice();
+    {
+        const QSignalBlocker block_link(link_);
+        const QSignalBlocker block_speed(speed_);
+        link_->setCurrentIndex(static_cast<int>(choice.kind));
+        speed_->setCurrentIndex(std::max(0, speed_->findData(choice.speed)));
+        if (address_->text().trimmed() != choice.address) {
+            address_->setText(choice.address);
+        }
+    }
     address_action_->setVisible(choice.kind == LinkKind::External);
     speed_action_->setVisible(choice.kind == LinkKind::Embedded);
+    nxt_action_->setVisible(choice.kind == LinkKind::Nxt);
+    nxt_->setText(choice.emulated                ? tr("Emulated brick…")
+                  : choice.nxt_address.isEmpty() ? tr("Choose the NXT…")
+                                                 : choice.nxt_address + QStringLiteral(" …"));
+}
+
+ConnectDialog* RunToolBar::openConnectDialog() {
+    auto* dialog = new ConnectDialog(session_.linkChoice(), window());
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        session_.setLinkChoice(dialog->choice());
+        showLinkFields();
+    });
+    connect(dialog, &QDialog::rejected, this, [this] { showLinkFields(); });
+    dialog->open();
+    return dialog;
 }
 
 void RunToolBar::phaseChanged(RunPhase phase) {
@@ -112,6 +161,8 @@ void RunToolBar::phaseChanged(RunPhase phase) {
     link_->setEnabled(!active);
     address_->setEnabled(!active);
     speed_->setEnabled(!active);
+    nxt_->setEnabled(!active);
+    connect_->setEnabled(!active);
 }
 
 }  // namespace legofeup::ui

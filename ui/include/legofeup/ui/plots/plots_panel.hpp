@@ -53,6 +53,9 @@ class PlotsPanel : public QWidget {
     QCPGraph* graph(Series series) const;
     /// The χ² 95 % bound lines of the Nis and Nees plots (nullptr for the other plots).
     QCPItemStraightLine* boundLine(PlotKind kind, BoundSide side) const;
+    /// Whether the plots that need the truth (errors, NEES) say the run has none (a real
+    /// robot): its latest sample came without truth.
+    bool showsNoTruth() const { return no_truth_shown_; }
 
     /// Seconds of history shown; 0 = the whole run.
     double timeWindow() const { return time_window_; }
@@ -94,6 +97,7 @@ class PlotsPanel : public QWidget {
     void requestReplots();
     void onBeforeReplot(PlotKind kind);
     void onAfterReplot();
+    void showNoTruth(bool shown);
 
     const RunHistory& history_;
     std::uint64_t epoch_ = 0;
@@ -118,6 +122,9 @@ class PlotsPanel : public QWidget {
         double value = 0.0;
     };
     std::array<std::array<ReferenceLine, 2>, kPlotKindCount> references_{};
+    /// "No ground truth" on the plots that need it; nullptr on the others.
+    std::array<QCPItemText*, kPlotKindCount> no_truth_{};
+    bool no_truth_shown_ = false;
 
     std::array<bool, kPlotKindCount> stale_{};           ///< changed while hidden
     std::array<bool, kPlotKindCount> replot_pending_{};  ///< queued, not yet run

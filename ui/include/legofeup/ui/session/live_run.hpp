@@ -1,5 +1,6 @@
 #pragma once
-// One run of the loop against a simulator server, on a thread of its own: the GUI's run.
+// One run of the loop against a robot — a simulator server, or an NXT (real or emulated) —
+// on a thread of its own: the GUI's run.
 //
 // Unlike the CLI's run_with_link() it is open-ended and can be changed while it runs: a new
 // configuration (Q, R, V_ref, noise, …), keyboard driving on or off, the keyboard's command,
@@ -8,24 +9,33 @@
 // the GUI thread takes in batches. Nothing here blocks the caller: every call takes a mutex
 // held only to copy a few values.
 //
+// The robot is taken by a connection factory called on the worker thread, so a slow connect
+// (a Bluetooth link can take seconds) never blocks the GUI. The run talks to the robot only
+// through lessons::RobotConnection: a robot without ground truth (a real NXT) gives samples
+// without truth.
+//
 // Qt-free on purpose: the session wraps it in signals, tests drive it directly.
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "legofeup/lessons/udp_run.hpp"
+#include "legofeup/comms/nxt/nxt_link.hpp"
+#include "legofeup/core/legofeup_loop.hpp"
+#include "legofeup/lessons/robot_connection.hpp"
+#include "legofeup/lessons/run_config.hpp"
 #include "legofeup/ui/run_history.hpp"
 
 namespace legofeup::ui {
 
 enum class RunPhase : std::uint8_t {
     Idle,        ///< no run (the session's state before the first start and after a reset)
-    Connecting,  ///< taking the simulator's robot
+    Connecting,  ///< taking the robot (the connection factory runs)
     Running,
     Paused,
     Finished,  ///< the routine is done (all laps driven) or the time limit
@@ -36,9 +46,13 @@ enum class RunPhase : std::uint8_t {
 struct LiveRunStatus {
     RunPhase phase = RunPhase::Connecting;
     std::string message;  ///< why the run failed
+    std::string link;     ///< the robot taken (RobotConnection::describe()); empty before
     std::uint64_t steps = 0;
     std::uint64_t frames_missing = 0;  ///< control periods run without a frame
-    double time = 0.0;                 ///< simulated time of the latest step, s
+    double time = 0.0;                 ///< time of the latest step, s
+    /// An NXT link's health (state, cycle time, timeouts, battery), refreshed every step;
+    /// nullopt for a simulator.
+    std::optional<comms::nxt::LinkQuality> nxt;
 };
 
 class LiveRun {
@@ -46,9 +60,12 @@ class LiveRun {
     /// Called from the worker thread when samples wait to be taken (once until the next
     /// take_samples()) or the phase changed. Must be cheap and thread-safe.
     using Notify = std::function<void()>;
+    /// Takes the robot (blocking; called once, on the worker thread). Throws with what went
+    /// wrong and what to do.
+    using ConnectionFactory = std::function<std::unique_ptr<lessons::RobotConnection>()>;
 
-    /// Starts the worker at once: it connects to `target` and runs `run` there.
-    LiveRun(lessons::ResolvedRun run, lessons::UdpTarget target, Notify notify);
+    /// Starts the worker at once: it calls `connect` and runs `run` on the robot it returns.
+    LiveRun(lessons::ResolvedRun run, ConnectionFactory connect, Notify notify);
     /// Stops the motors, releases the robot and joins the worker.
     ~LiveRun();
     LiveRun(const LiveRun&) = delete;
@@ -78,14 +95,17 @@ class LiveRun {
     };
 
     void work(const std::stop_token& stop);
-    void apply(Requests requests, LegoFeupLoop& loop, lessons::UdpRobotConnection& connection);
-    void publish(RunSample sample, std::uint64_t frames_missing);
+    void apply(Requests requests, LegoFeupLoop& loop, lessons::RobotConnection& connection);
+    void publish(RunSample sample, std::uint64_t frames_missing,
+                 std::optional<comms::nxt::LinkQuality> nxt);
+    /// Throws if the connection reports its link failed (an NXT that stopped answering).
+    static void check_link(const lessons::RobotConnection& connection);
     void set_phase(RunPhase phase, std::string message = {});
     bool is_over(const LoopSnapshot& snapshot) const;
 
     // Owned by the worker thread once it runs.
     lessons::ResolvedRun run_;
-    lessons::UdpTarget target_;
+    ConnectionFactory connect_;
     Notify notify_;
     bool manual_ = false;
 

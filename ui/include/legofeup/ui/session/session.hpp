@@ -21,6 +21,8 @@
 #include <memory>
 
 #include "legofeup/lessons/config_schema.hpp"
+#include "legofeup/lessons/nxt_run.hpp"
+#include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/run_config.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
 #include "legofeup/ui/run_history.hpp"
@@ -29,17 +31,27 @@
 namespace legofeup::simserver {
 class SimServer;
 }
+namespace legofeup::nxtemu {
+class EmulatedNxt;
+}
 
 namespace legofeup::ui {
 
 /// Where the robot is: the simulator inside the application, a legofeup-sim elsewhere, or
-/// the real NXT (not available yet).
+/// a LEGO NXT (over Bluetooth, a serial port or TCP; or an emulated brick in the application).
 enum class LinkKind : std::uint8_t { Embedded, External, Nxt };
 
 struct LinkChoice {
     LinkKind kind = LinkKind::Embedded;
     QString address = QStringLiteral("udp://127.0.0.1:5600");  ///< External: the robot port
     double speed = 1.0;  ///< Embedded: simulated seconds per real second
+    /// Nxt: the brick's address as typed (see nxt_address.hpp; a bare XX:XX:… is bt:).
+    QString nxt_address;
+    bool relay = false;     ///< Nxt: the relay program on the brick (docs/nxt.md)
+    QString robot_profile;  ///< Nxt: a robot profile (TOML) for the run; empty: none
+    /// Nxt: rehearse without a robot — an emulated brick inside the application, driven
+    /// through the whole NXT path over loopback TCP, with the simulator's ground truth.
+    bool emulated = false;
 };
 
 class Session : public QObject {
@@ -69,6 +81,8 @@ class Session : public QObject {
     QString changeSetting(const lessons::Setting& setting, const lessons::SettingValue& value);
     /// Takes effect at the next start.
     void setLinkChoice(const LinkChoice& choice);
+    /// The latest NXT link's health (nullopt for a simulator, or before an NXT run).
+    const std::optional<comms::nxt::LinkQuality>& nxtQuality() const { return status_.nxt; }
 
     /// Writes the configuration as TOML (the CLI reads the same file). Returns an error or "".
     QString saveConfig(const QString& path) const;
@@ -83,7 +97,8 @@ class Session : public QObject {
     const QString& recordingDirectory() const { return recording_directory_; }
 
   public slots:
-    /// Starts a new run (from a clean history), or resumes a paused one.
+    /// Starts a new run (from a clean history), or resumes a paused one. After a failed run
+    /// it connects again with the same choice: reconnecting needs no restart.
     void start();
     /// Stops the run: the motors stop and the robot is released; the history stays.
     void stop();
@@ -101,6 +116,7 @@ class Session : public QObject {
     void phaseChanged(legofeup::ui::RunPhase phase);
     void configChanged();
     void manualDrivingChanged(bool manual);
+    void linkChoiceChanged();
     /// Something the user should read (a failed link, a refused file).
     void problem(const QString& message);
 
@@ -109,7 +125,15 @@ class Session : public QObject {
     void drain();           // GUI thread
     void restartHistory();
     void retireRun();
-    std::optional<lessons::UdpTarget> prepareTarget();
+    /// How the next run takes its robot (starting the embedded simulator or the emulated
+    /// brick first); nullopt after emitting problem().
+    std::optional<LiveRun::ConnectionFactory> prepareConnection();
+    std::optional<LiveRun::ConnectionFactory> prepareNxt();
+    /// Starts an emulated brick on this run's simulator, on a free loopback TCP port, and
+    /// points `target` at it (and its truth). False after emitting problem().
+    bool startEmulatedNxt(lessons::NxtTarget& target);
+    /// `run` with the NXT run's robot profile applied to the filter (as it is without one).
+    lessons::ResolvedRun forThisRobot(lessons::ResolvedRun run) const;
     void openTrace();
     void closeTrace();
 
@@ -122,6 +146,8 @@ class Session : public QObject {
     RunHistory history_;
 
     std::unique_ptr<simserver::SimServer> embedded_;
+    std::unique_ptr<nxtemu::EmulatedNxt> emulated_nxt_;
+    std::optional<lessons::RobotProfile> profile_;  ///< the NXT run's robot profile, if any
     std::unique_ptr<LiveRun> run_;
     std::vector<std::future<void>> reapers_;  ///< retired runs being stopped and joined
 

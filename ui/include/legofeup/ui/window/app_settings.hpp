@@ -5,7 +5,10 @@
 
 #include <QSettings>
 #include <QString>
+#include <QStringList>
 #include <QVariant>
+
+#include "legofeup/ui/session/session.hpp"
 
 namespace legofeup::ui {
 
@@ -34,16 +37,36 @@ inline const Preference<bool> kFollowRobot{"view/followRobot", false};
 inline const Preference<bool> kShowFrameTimes{"view/showFrameTimes", false};
 /// Seconds of history in the plots; 0: the whole run.
 inline const Preference<double> kPlotWindow{"view/plotWindow", 60.0};
-/// 0: embedded, 1: external (LinkKind).
+/// 0: embedded, 1: external, 2: NXT (LinkKind).
 inline const Preference<int> kLinkKind{"link/kind", 0};
 inline const Preference<QString> kLinkAddress{"link/address",
                                               QStringLiteral("udp://127.0.0.1:5600")};
 inline const Preference<double> kSimulatorSpeed{"link/speed", 1.0};
+/// The NXT's address as typed ("bt:00:16:53:…", "serial:/dev/rfcomm0", "tcp:HOST:PORT").
+inline const Preference<QString> kNxtAddress{"nxt/address", {}};
+inline const Preference<bool> kNxtRelay{"nxt/relay", false};
+/// A robot profile (TOML) applied to NXT runs; empty: none.
+inline const Preference<QString> kNxtProfile{"nxt/profile", {}};
+inline const Preference<bool> kNxtEmulated{"nxt/emulated", false};
+/// The bricks connected to, most recent first (remember_robot() keeps the list).
+inline const Preference<QStringList> kRecentRobots{"nxt/recent", {}};
 inline const Preference<QString> kExperiment{"lesson/experiment", QStringLiteral("f")};
 
 }  // namespace preferences
 
 /// Where the configuration in use is kept between sessions (the CLI's TOML format).
 QString last_config_path();
+
+/// The link chosen last time (the robot, the simulator's address and speed, the NXT's).
+LinkChoice saved_link_choice();
+void save_link_choice(const LinkChoice& choice);
+
+/// How many recent robots are kept.
+inline constexpr int kMaxRecentRobots = 8;
+/// `recent` with `address` moved (or added) to the front, without duplicates, at most
+/// kMaxRecentRobots long.
+QStringList with_recent_robot(QStringList recent, const QString& address);
+/// Puts `address` first in the persisted recent robots.
+void remember_robot(const QString& address);
 
 }  // namespace legofeup::ui

@@ -6,6 +6,7 @@
 #include <QMainWindow>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QTimer;
 
@@ -13,6 +14,9 @@ namespace legofeup::ui {
 
 class ArenaView;
 class ConfigPanel;
+class IrCalibrationDialog;
+class RobotStatusView;
+class UmbmarkDialog;
 class CovarianceView;
 class ExperimentPanel;
 class FileActions;
@@ -36,6 +40,9 @@ class MainWindow : public QMainWindow {
     RunToolBar& runToolBar() const { return *toolbar_; }
     KeyboardDriver& keyboard() const { return *keyboard_; }
     FileActions& fileActions() const { return *files_; }
+    RobotStatusView& robotStatus() const { return *robot_; }
+    /// Run ▸ Reconnect: enabled after a failed run.
+    QAction* reconnectAction() const { return reconnect_; }
 
     /// The projector view: everything's text 1.6× larger.
     void setLargeText(bool on);
@@ -44,6 +51,12 @@ class MainWindow : public QMainWindow {
     /// The status line's frame-time part (also logged): arena and plots, mean/p99/max.
     QString frameTimesText() const;
 
+  public slots:
+    /// Tools ▸ IR sensor calibration / Odometry calibration: opens the dialog (not blocking;
+    /// one at a time) and returns it.
+    IrCalibrationDialog* openIrCalibration();
+    UmbmarkDialog* openUmbmark();
+
   protected:
     void closeEvent(QCloseEvent* event) override;
 
@@ -51,6 +64,7 @@ class MainWindow : public QMainWindow {
     void buildDocks();
     void buildMenus();
     void updateStatus();
+    void showRobotDock(QDockWidget* robot_dock);
     void restorePreferences();
     void savePreferences() const;
 
@@ -63,7 +77,10 @@ class MainWindow : public QMainWindow {
     RunToolBar* toolbar_ = nullptr;
     KeyboardDriver* keyboard_ = nullptr;
     FileActions* files_ = nullptr;
+    RobotStatusView* robot_ = nullptr;
     QLabel* status_ = nullptr;
+    QLabel* robot_line_ = nullptr;
+    QAction* reconnect_ = nullptr;
     QLabel* frames_ = nullptr;
     QAction* large_text_ = nullptr;
     QAction* frame_times_ = nullptr;

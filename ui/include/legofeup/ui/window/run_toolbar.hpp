@@ -1,7 +1,7 @@
 #pragma once
 // The run's controls: start, pause, stop, reset; where the robot is (embedded simulator,
-// an external legofeup-sim, the NXT); the simulator's speed; and the path controller switch
-// (off: drive with the keyboard).
+// an external legofeup-sim, an NXT — chosen in the connect dialog); the simulator's speed;
+// and the path controller switch (off: drive with the keyboard).
 
 #include <QToolBar>
 
@@ -9,9 +9,11 @@ class QAction;
 class QCheckBox;
 class QComboBox;
 class QLineEdit;
+class QToolButton;
 
 namespace legofeup::ui {
 
+class ConnectDialog;
 class Session;
 enum class RunPhase : std::uint8_t;
 
@@ -29,10 +31,20 @@ class RunToolBar : public QToolBar {
     QLineEdit* addressField() const { return address_; }
     QComboBox* speedChoice() const { return speed_; }
     QCheckBox* pathControllerSwitch() const { return path_controller_; }
+    /// Shows the NXT chosen (its address, or "emulated brick"); opens the connect dialog.
+    QToolButton* nxtButton() const { return nxt_; }
+    /// "Connect to an NXT…": opens the connect dialog.
+    QAction* connectAction() const { return connect_; }
+
+  public slots:
+    /// Opens the connect dialog (window-modal, not blocking); accepting it makes the NXT the
+    /// robot of the next start, cancelling keeps the robot chosen before. Returns it.
+    ConnectDialog* openConnectDialog();
 
   private:
     void phaseChanged(RunPhase phase);
     void linkEdited();
+    void showLinkFields();
 
     Session& session_;
     QAction* start_ = nullptr;
@@ -44,6 +56,9 @@ class RunToolBar : public QToolBar {
     QAction* address_action_ = nullptr;
     QComboBox* speed_ = nullptr;
     QAction* speed_action_ = nullptr;
+    QToolButton* nxt_ = nullptr;
+    QAction* nxt_action_ = nullptr;
+    QAction* connect_ = nullptr;
     QCheckBox* path_controller_ = nullptr;
 };
 

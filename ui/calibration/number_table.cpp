@@ -1,0 +1,99 @@
+#include "legofeup/ui/calibration/number_table.hpp"
+
+#include <QHeaderView>
+#include <algorithm>
+#include <set>
+
+#include "legofeup/ui/panels/number_text.hpp"
+
+namespace legofeup::ui {
+
+NumberTable::NumberTable(const QStringList& headers, QWidget* parent)
+    : QTableWidget(0, static_cast<int>(headers.size()), parent), headers_(headers) {
+    setHorizontalHeaderLabels(headers);
+    horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
+    setSelectionBehavior(QAbstractItemView::SelectRows);
+}
+
+int NumberTable::addRow(const std::vector<double>& values) {
+    const int row = rowCount();
+    insertRow(row);
+    for (int column = 0; column < columnCount(); ++column) {
+        auto* item = new QTableWidgetItem;
+        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        setItem(row, column, item);
+        if (static_cast<std::size_t>(column) < values.size()) {
+            setNumber(row, column, values[static_cast<std::size_t>(column)]);
+        }
+    }
+    return row;
+}
+
+void NumberTable::removeSelectedRows() {
+    std::set<int> rows;
+    for (const QModelIndex& index : selectionModel()->selectedIndexes()) {
+        rows.insert(index.row());
+    }
+    if (rows.empty() && currentRow() >= 0) {
+        rows.insert(currentRow());
+    }
+    for (auto row = rows.rbegin(); row != rows.rend(); ++row) {
+        removeRow(*row);
+    }
+}
+
+void NumberTable::setRows(const std::vector<std::vector<double>>& rows) {
+    setRowCount(0);
+    for (const std::vector<double>& values : rows) {
+        addRow(values);
+    }
+}
+
+void NumberTable::setNumber(int row, int column, double value) {
+    QTableWidgetItem* cell = item(row, column);
+    if (cell == nullptr) {
+        cell = new QTableWidgetItem;
+        cell->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        setItem(row, column, cell);
+    }
+    cell->setText(number_text(value));
+}
+
+std::optional<std::vector<std::vector<double>>> NumberTable::numbers(QString* problem) const {
+    std::vector<std::vector<double>> rows;
+    for (int row = 0; row < rowCount(); ++row) {
+        QStringList texts;
+        for (int column = 0; column < columnCount(); ++column) {
+            const QTableWidgetItem* cell = item(row, column);
+            texts << (cell != nullptr ? cell->text().trimmed() : QString());
+        }
+        if (std::all_of(texts.begin(), texts.end(), [](const QString& t) { return t.isEmpty(); })) {
+            continue;
+        }
+        std::vector<double> values;
+        for (int column = 0; column < columnCount(); ++column) {
+            const QString& text = texts[column];
+            const std::optional<double> value = parse_number(text);
+            if (!value) {
+                if (problem != nullptr) {
+                    *problem =
+                        text.isEmpty()
+                            ? QObject::tr("Row %1, %2: empty").arg(row + 1).arg(headers_[column])
+                            : QObject::tr("Row %1, %2: '%3' is not a number%4")
+                                  .arg(row + 1)
+                                  .arg(headers_[column], text,
+                                       text.contains(QLatin1Char(','))
+                                           ? QObject::tr(" (use a point for decimals)")
+                                           : QString());
+                }
+                return std::nullopt;
+            }
+            values.push_back(*value);
+        }
+        rows.push_back(std::move(values));
+    }
+    return rows;
+}
+
+}  // namespace legofeup::ui
