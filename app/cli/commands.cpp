@@ -45,24 +45,14 @@ class Observers final : public lessons::RunObserver {
 
 // Defaults, then the experiment's preset, then the configuration file, then the flags.
 RunConfig build_config(const RunOptions& options, std::string& title) {
-    RunConfig config;
+    RunConfig config =
+        lessons::compose_config({options.experiment, options.config_file, options.seed});
     title = "default configuration";
-    if (!options.experiment.empty()) {
-        const lessons::Experiment* experiment = lessons::find_experiment(options.experiment);
-        if (experiment == nullptr) {
-            throw InputError({{"", 0, "--experiment", options.experiment,
-                               "unknown experiment (choose a, b, c, d, e or f)"}});
-        }
-        config = experiment->config;
+    if (const lessons::Experiment* experiment = lessons::find_experiment(options.experiment)) {
         title = "experiment " + experiment->id + ": " + experiment->title;
     }
     if (!options.config_file.empty()) {
-        config = lessons::load_config_file(options.config_file, config);
         title += " + " + fs::path(options.config_file).filename().string();
-    }
-    if (options.seed) {
-        config.seed = *options.seed;
-        config.origins["seed"] = {"--seed", 0, "seed"};
     }
     if (options.laps) {
         config.laps = *options.laps;
@@ -148,7 +138,7 @@ class StepCounter final : public lessons::RunObserver {
 
 NxtRunReport run_on_nxt(const lessons::ResolvedRun& run, const lessons::NxtTarget& target,
                         lessons::RunObserver& observer, const lessons::ProgressCallback& progress) {
-    const std::unique_ptr<lessons::RobotConnection> connection = lessons::connect_nxt(run, target);
+    const std::unique_ptr<lessons::RobotConnection> connection = lessons::connect_nxt(target);
     lessons::UnknownTruth unknown;
     TruthSource* truth = connection->truth_source();
     NxtRunReport report;

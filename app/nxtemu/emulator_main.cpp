@@ -26,24 +26,14 @@ using lessons::InputError;
 
 /// The robot behind the brick: the experiment's preset, then the file, then --seed.
 lessons::RunConfig robot_config(const EmulatorCommand& command, std::string& title) {
-    lessons::RunConfig config;
+    lessons::RunConfig config =
+        lessons::compose_config({command.experiment, command.config_file, command.seed});
     title = "default robot";
-    if (!command.experiment.empty()) {
-        const lessons::Experiment* experiment = lessons::find_experiment(command.experiment);
-        if (experiment == nullptr) {
-            throw InputError({{"", 0, "--experiment", command.experiment,
-                               "unknown experiment (choose a, b, c, d, e or f)"}});
-        }
-        config = experiment->config;
+    if (const lessons::Experiment* experiment = lessons::find_experiment(command.experiment)) {
         title = "experiment " + experiment->id;
     }
     if (!command.config_file.empty()) {
-        config = lessons::load_config_file(command.config_file, config);
         title += " + " + fs::path(command.config_file).filename().string();
-    }
-    if (command.seed) {
-        config.seed = *command.seed;
-        config.origins["seed"] = {"--seed", 0, "seed"};
     }
     return config;
 }

@@ -7,6 +7,7 @@
 
 #include "config_reader.hpp"
 #include "legofeup/lessons/config_schema.hpp"
+#include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "toml_values.hpp"
 
@@ -262,6 +263,26 @@ std::string config_to_toml(const RunConfig& config, std::string_view title) {
             << format_setting_value(setting.get(config)) << "  # " << setting.help << "\n";
     }
     return out.str();
+}
+
+RunConfig compose_config(const ConfigSources& sources) {
+    RunConfig config;
+    if (!sources.experiment.empty()) {
+        const Experiment* experiment = find_experiment(sources.experiment);
+        if (experiment == nullptr) {
+            throw InputError({{"", 0, "--experiment", sources.experiment,
+                               "unknown experiment (choose a, b, c, d, e or f)"}});
+        }
+        config = experiment->config;
+    }
+    if (!sources.config_file.empty()) {
+        config = load_config_file(sources.config_file, config);
+    }
+    if (sources.seed) {
+        config.seed = *sources.seed;
+        config.origins["seed"] = {"--seed", 0, "seed"};
+    }
+    return config;
 }
 
 }  // namespace legofeup::lessons

@@ -95,7 +95,7 @@ void apply_robot_profile(const RobotProfile& profile, NxtTarget& target) {
     }
 }
 
-std::unique_ptr<RobotConnection> connect_nxt(const ResolvedRun& /*run*/, const NxtTarget& target) {
+std::unique_ptr<RobotConnection> connect_nxt(const NxtTarget& target) {
     return std::make_unique<NxtRobotConnection>(target);
 }
 

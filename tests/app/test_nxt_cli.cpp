@@ -22,24 +22,14 @@ using legofeup::testing::Result;
 
 class NxtCli : public legofeup::testing::ProgramTest {
   protected:
-    void TearDown() override {
-        if (fs::exists(dir_ / "emu.pid")) {
-            std::system(("kill $(cat " + (dir_ / "emu.pid").string() + ") 2>/dev/null").c_str());
-        }
-    }
-
     /// Starts legofeup-nxt-emu in the background; returns its ready file (empty on failure).
-    nlohmann::json start_emulator(const std::string& arguments) const {
+    nlohmann::json start_emulator(const std::string& arguments) {
         const fs::path ready = dir_ / "ready.json";
-        const std::string command =
-            std::string(LEGOFEUP_NXT_EMU) + " --latency-ms 30 --duration 600 --quiet --ready-file "
-            + ready.string() + " " + arguments + " > " + (dir_ / "emu.log").string()
-            + " 2>&1 & echo $! > " + (dir_ / "emu.pid").string();
-        std::system(command.c_str());
-        for (int i = 0; i < 1000 && !fs::exists(ready); ++i) {
-            std::this_thread::sleep_for(10ms);
-        }
-        if (!fs::exists(ready)) {
+        start_in_background(LEGOFEUP_NXT_EMU,
+                            "--latency-ms 30 --duration 600 --quiet --ready-file " + ready.string()
+                                + " " + arguments,
+                            "emu");
+        if (!wait_for_file(ready, 10s)) {
             return {};
         }
         return nlohmann::json::parse(read_file(ready));

@@ -22,27 +22,19 @@ using legofeup::testing::Result;
 
 class SimCli : public legofeup::testing::ProgramTest {
   protected:
-    void TearDown() override {
-        if (fs::exists(dir_ / "sim.pid")) {
-            std::system(("kill $(cat " + (dir_ / "sim.pid").string() + ") 2>/dev/null").c_str());
-        }
-    }
-
     Result run(const std::string& program, const std::string& arguments) const {
         return run_program(program, arguments);
     }
 
     /// Starts legofeup-sim in the background on free ports; returns the legofeup-cli
     /// options that reach it (empty if it did not start).
-    std::string start_server(const std::string& arguments) const {
+    std::string start_server(const std::string& arguments) {
         const fs::path ready = dir_ / "ready";
-        const std::string command = std::string(LEGOFEUP_SIM) + " --port 0 --ready-file "
-                                    + ready.string() + " --duration 60 --quiet " + arguments
-                                    + " & echo $! > " + (dir_ / "sim.pid").string();
-        std::system(command.c_str());
-        for (int i = 0; i < 500 && !fs::exists(ready); ++i) {
-            std::this_thread::sleep_for(10ms);
-        }
+        start_in_background(
+            LEGOFEUP_SIM,
+            "--port 0 --ready-file " + ready.string() + " --duration 60 --quiet " + arguments,
+            "sim");
+        wait_for_file(ready, 5s);
         std::istringstream ports(read_file(ready));
         std::string robot, truth, control;
         std::getline(ports, robot);

@@ -194,7 +194,7 @@ struct EmulatedBrick {
     }
 
     LiveRun::ConnectionFactory connect() const {
-        return [run = run, target = target] { return lessons::connect_nxt(run, target); };
+        return [target = target] { return lessons::connect_nxt(target); };
     }
 };
 

@@ -292,7 +292,7 @@ std::optional<LiveRun::ConnectionFactory> Session::prepareNxt() {
             return std::nullopt;
         }
     }
-    return [run = forThisRobot(resolved_), target]() { return lessons::connect_nxt(run, target); };
+    return [target]() { return lessons::connect_nxt(target); };
 }
 
 bool Session::startEmulatedNxt(lessons::NxtTarget& target) {

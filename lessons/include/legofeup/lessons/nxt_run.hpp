@@ -34,6 +34,6 @@ void apply_robot_profile(const RobotProfile& profile, NxtTarget& target);
 
 /// Connects to the brick (on this thread; may take seconds), sets it up and returns the
 /// connection. Throws comms::LinkError saying what failed and what to do.
-std::unique_ptr<RobotConnection> connect_nxt(const ResolvedRun& run, const NxtTarget& target);
+std::unique_ptr<RobotConnection> connect_nxt(const NxtTarget& target);
 
 }  // namespace legofeup::lessons
