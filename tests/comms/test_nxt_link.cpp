@@ -26,7 +26,11 @@ class ScriptedBrick {
   public:
     using Respond = std::function<std::optional<Telegram>(const DecodedRequest&)>;
 
-    explicit ScriptedBrick(Respond respond) : respond_(std::move(respond)) {
+    /// `last_of_a_request` tells which requests end one of the host's requests (a direct
+    /// cycle's batch is several telegrams), for replies_with_a_request_waiting().
+    explicit ScriptedBrick(Respond respond,
+                           std::function<bool(const DecodedRequest&)> last_of_a_request = {})
+        : respond_(std::move(respond)), last_of_a_request_(std::move(last_of_a_request)) {
         int fds[2];
         if (::socketpair(AF_UNIX, SOCK_STREAM, 0, fds) != 0) {
             throw std::runtime_error("socketpair");
@@ -43,6 +47,9 @@ class ScriptedBrick {
     std::unique_ptr<ByteStream> take_host_end() { return std::move(host_); }
     /// Closes the brick's end: the host sees the link go away.
     void pull_the_plug() { unplugged_ = true; }
+    /// Replies ending a request, sent while the host's next request was already waiting:
+    /// how often the host had more than one request in flight.
+    int replies_with_a_request_waiting() const { return pipelined_; }
 
     std::vector<DecodedRequest> log() const {
         const std::lock_guard lock(mutex_);
@@ -81,6 +88,10 @@ class ScriptedBrick {
                 log_.push_back(decoded);
             }
             std::optional<Telegram> reply = respond_(decoded);
+            if (reply && last_of_a_request_ && last_of_a_request_(decoded)
+                && brick_->wait_readable(ByteStream::Clock::now())) {
+                ++pipelined_;
+            }
             if (reply && decoded.wants_reply()) {
                 try {
                     write_telegram(*brick_, *reply);
@@ -92,9 +103,11 @@ class ScriptedBrick {
     }
 
     Respond respond_;
+    std::function<bool(const DecodedRequest&)> last_of_a_request_;
     std::unique_ptr<ByteStream> host_;
     std::unique_ptr<ByteStream> brick_;
     std::atomic<bool> unplugged_{false};
+    std::atomic<int> pipelined_{0};
     mutable std::mutex mutex_;
     std::vector<DecodedRequest> log_;
     std::jthread thread_;
@@ -479,6 +492,44 @@ TEST(NxtLink, RelayModeStartsTheProgramAndReadsItsMessages) {
     link.disconnect();
     std::this_thread::sleep_for(50ms);
     EXPECT_FALSE(firmware.running);  // STOPPROGRAM on the way out
+}
+
+TEST(NxtLink, RelayModeKeepsTheNextReadInFlightDirectCommandsDoNot) {
+    // A brick that takes 100 ms per reply: with two reads in flight the next request is
+    // already waiting when a reply goes out (the host sent it one 40 ms period after the
+    // previous one); with one batch in flight it never is.
+    const auto replies_with_a_request_waiting = [](CycleMode mode) {
+        RelayFirmware firmware;
+        std::atomic<bool> slow{false};
+        ScriptedBrick brick(
+            [&](const DecodedRequest& request) -> std::optional<Telegram> {
+                if (slow && request.opcode != 0x04) {
+                    std::this_thread::sleep_for(100ms);
+                }
+                return firmware(request);
+            },
+            [](const DecodedRequest& request) {
+                // A relay cycle is one MESSAGEREAD; a direct one ends with the rear sensor.
+                const auto* input =
+                    request.body ? std::get_if<GetInputValues>(&*request.body) : nullptr;
+                return request.opcode == 0x13 || (input != nullptr && input->port == 1);
+            });
+        NxtLinkOptions options = test_options();
+        options.mode = mode;
+        options.min_period = 40ms;
+        options.reply_timeout = 1000ms;
+        NxtLink link(options);
+        link.connect(brick.take_host_end());
+        EXPECT_TRUE(link.next_frame());  // the first cycle also asks for the battery
+        const int before = brick.replies_with_a_request_waiting();
+        slow = true;
+        for (int i = 0; i < 4; ++i) {
+            EXPECT_TRUE(link.next_frame());
+        }
+        return brick.replies_with_a_request_waiting() - before;
+    };
+    EXPECT_GE(replies_with_a_request_waiting(CycleMode::Relay), 2);
+    EXPECT_EQ(replies_with_a_request_waiting(CycleMode::DirectCommands), 0);
 }
 
 TEST(NxtLink, RelayModeWithoutTheProgramSaysWhatToDo) {
