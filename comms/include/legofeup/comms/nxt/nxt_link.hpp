@@ -3,21 +3,22 @@
 // and IR A/D values in, wheel speeds out. To the loop it is a RobotLink like the simulator.
 //
 // Cycle design for Bluetooth, where every change of direction costs ≈30 ms:
-//  - Direct commands (stock firmware, nothing on the brick): each cycle is ONE write — the
-//    two motor SETOUTPUTSTATEs sent "no reply", then GETOUTPUTSTATE × 2 and GETINPUTVALUES × 2
-//    — and ONE read of the four replies: two direction changes per cycle, not eight.
+//  - Motor commands never wait: send_command() writes the two SETOUTPUTSTATEs at once, as
+//    "no reply" commands.
+//  - Direct commands (stock firmware, nothing on the brick): each cycle is ONE write of
+//    GETOUTPUTSTATE × 2 and GETINPUTVALUES × 2 and ONE read of the four replies — two
+//    direction changes per cycle, not eight. One batch is in flight at a time.
 //  - Relay (resources/nxt/legofeup_relay.nxc running on the brick): the program packs the
-//    counts and A/D values into one mailbox message; each cycle is one write (motor sets and
-//    a MESSAGEREAD) and one reply, and the next MESSAGEREAD is sent before the loop works on
-//    the current one, so a cycle costs one period rather than one round trip.
+//    counts and A/D values into one mailbox message; each cycle is one MESSAGEREAD. Two are
+//    kept in flight, sent min_period apart, so a cycle costs a period, not a round trip.
 // The period is what the link sustains: next_frame() returns as soon as the cycle's replies
 // are in (never sooner than min_period after the previous frame). The frame's time is the
 // host's clock when the readings arrived, so the loop sees the real, varying period.
 //
-// Safety: any error, timeout or disconnect tries to stop both motors, records why in state(),
-// and leaves the link closed; connect() opens it again. The destructor stops the motors.
+// Safety: any error, timeout or disconnect tries to stop both motors, records why in
+// quality(), and leaves the link closed; connect() opens it again. The destructor stops the
+// motors.
 
-#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <memory>
