@@ -14,7 +14,7 @@
 #include "legofeup/lessons/calibration/umbmark.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
-#include "plot/figure.hpp"
+#include "legofeup/report/figure.hpp"
 
 namespace legofeup::cli {
 namespace {

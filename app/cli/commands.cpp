@@ -19,8 +19,8 @@
 #include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
 #include "legofeup/lessons/udp_run.hpp"
+#include "legofeup/report/run_plots.hpp"
 #include "progress_bar.hpp"
-#include "run_plots.hpp"
 
 namespace legofeup::cli {
 namespace {
@@ -279,7 +279,7 @@ int run_command(const RunOptions& options) {
             throw std::runtime_error("cannot write " + (out / "trace.csv").string());
         }
         lessons::TraceCsvWriter writer(trace.stream(), run.loop);
-        RunRecording recording;
+        report::RunRecording recording;
         Observers observers;
         observers.add(writer);
         if (options.plots) {
@@ -320,7 +320,7 @@ int run_command(const RunOptions& options) {
         // Plots compare the estimate with the truth: a real robot has none.
         const bool plots = options.plots && !(nxt && !nxt->truth_known);
         if (plots) {
-            write_run_plots(recording, run.world, out, "LegoFeup " + title);
+            report::write_run_plots(recording, run.world, out, "LegoFeup " + title);
         }
         if (interrupted) {
             std::cerr << "error: the run on " << link.describe() << " stopped after " << steps.steps

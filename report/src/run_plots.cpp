@@ -1,13 +1,13 @@
-#include "run_plots.hpp"
+#include "legofeup/report/run_plots.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
 #include <optional>
 
-#include "plot/figure.hpp"
+#include "legofeup/report/figure.hpp"
 
-namespace legofeup::cli {
+namespace legofeup::report {
 namespace {
 
 using plot::Band;
@@ -193,4 +193,4 @@ std::vector<std::string> write_run_plots(const RunRecording& recording, const si
     return {"trajectory", "errors", "covariance", "ir_distances", "wheel_speeds"};
 }
 
-}  // namespace legofeup::cli
+}  // namespace legofeup::report

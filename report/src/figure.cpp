@@ -1,4 +1,4 @@
-#include "plot/figure.hpp"
+#include "legofeup/report/figure.hpp"
 
 #include <cairo-svg.h>
 #include <cairo.h>

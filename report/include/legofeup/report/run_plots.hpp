@@ -9,7 +9,7 @@
 #include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/sim/world.hpp"
 
-namespace legofeup::cli {
+namespace legofeup::report {
 
 /// Keeps what the plots need from every step.
 class RunRecording final : public lessons::RunObserver {
@@ -37,4 +37,4 @@ std::vector<std::string> write_run_plots(const RunRecording& recording, const si
                                          const std::filesystem::path& directory,
                                          const std::string& title);
 
-}  // namespace legofeup::cli
+}  // namespace legofeup::report
