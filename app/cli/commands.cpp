@@ -9,6 +9,8 @@
 #include <optional>
 #include <vector>
 
+#include "atomic_file.hpp"
+#include "input_problems.hpp"
 #include "legofeup/comms/link_error.hpp"
 #include "legofeup/core/angles.hpp"
 #include "legofeup/lessons/config_file.hpp"
@@ -60,34 +62,6 @@ RunConfig build_config(const RunOptions& options, std::string& title) {
     }
     return config;
 }
-
-void report_problems(const InputError& error) {
-    for (const lessons::InputProblem& problem : error.problems()) {
-        std::cerr << "error: " << problem.message() << '\n';
-    }
-}
-
-// Writes through a temporary name and renames at the end, so an interrupted or failed run
-// never leaves a half-written file where a complete one was.
-class AtomicFile {
-  public:
-    explicit AtomicFile(fs::path path)
-        : path_(std::move(path)), partial_(path_.string() + ".partial"), out_(partial_) {}
-    std::ostream& stream() { return out_; }
-    bool good() const { return out_.good(); }
-    void commit() {
-        out_.close();
-        if (!out_) {
-            throw std::runtime_error("cannot write " + path_.string());
-        }
-        fs::rename(partial_, path_);
-    }
-
-  private:
-    fs::path path_;
-    fs::path partial_;
-    std::ofstream out_;
-};
 
 /// The link a run uses: the deterministic in-process simulator, a server over UDP, or an NXT.
 struct LinkChoice {
