@@ -9,6 +9,7 @@ packages=(
     libbox2d-dev                        # sim: physics
     libtomlplusplus-dev nlohmann-json3-dev  # lessons: configuration files, summaries
     libcli11-dev libcairo2-dev fonts-dejavu-core  # legofeup-cli: options, PNG/SVG plots
+    libpango1.0-dev                     # report/: the student report's PDF (wrapped text)
     qt6-base-dev qt6-svg-dev libqcustomplot-dev  # ui/: the desktop application
     qt6-connectivity-dev                # ui/: Bluetooth scanning in the NXT connect dialog
     xvfb xauth                          # scripts/screenshots.sh: the GUI on a virtual display

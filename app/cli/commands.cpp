@@ -18,10 +18,12 @@
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/nxt_run.hpp"
+#include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
 #include "legofeup/lessons/udp_run.hpp"
 #include "legofeup/report/run_plots.hpp"
+#include "legofeup/version.hpp"
 #include "progress_bar.hpp"
 
 namespace legofeup::cli {
@@ -44,24 +46,6 @@ class Observers final : public lessons::RunObserver {
   private:
     std::vector<lessons::RunObserver*> observers_;
 };
-
-// Defaults, then the experiment's preset, then the configuration file, then the flags.
-RunConfig build_config(const RunOptions& options, std::string& title) {
-    RunConfig config =
-        lessons::compose_config({options.experiment, options.config_file, options.seed});
-    title = "default configuration";
-    if (const lessons::Experiment* experiment = lessons::find_experiment(options.experiment)) {
-        title = "experiment " + experiment->id + ": " + experiment->title;
-    }
-    if (!options.config_file.empty()) {
-        title += " + " + fs::path(options.config_file).filename().string();
-    }
-    if (options.laps) {
-        config.laps = *options.laps;
-        config.origins["laps"] = {"--laps", 0, "laps"};
-    }
-    return config;
-}
 
 /// The link a run uses: the deterministic in-process simulator, a server over UDP, or an NXT.
 struct LinkChoice {
@@ -225,7 +209,7 @@ int run_command(const RunOptions& options) {
     lessons::ResolvedRun run;
     LinkChoice link;
     try {
-        run = lessons::resolve(build_config(options, title));
+        run = lessons::resolve(compose_cli_config(options, title));
         link = choose_link(options);
         if (!options.profile.empty()) {
             const lessons::RobotProfile profile = lessons::load_robot_profile(options.profile);
@@ -267,6 +251,14 @@ int run_command(const RunOptions& options) {
         };
         StepCounter steps;
         observers.add(steps);
+        std::optional<lessons::RunLogWriter> run_log;  // --record: flushed as the run goes
+        if (!options.record_file.empty()) {
+            lessons::RunLogWriter::Options log_options;
+            log_options.program = std::string("legofeup-cli ") + kVersion;
+            log_options.link = link.describe();
+            run_log.emplace(options.record_file, run, title, std::move(log_options));
+            observers.add(*run_log);
+        }
         lessons::UdpRunReport report;
         std::optional<NxtRunReport> nxt;
         if (link.nxt) {
@@ -280,6 +272,9 @@ int run_command(const RunOptions& options) {
         const lessons::RunResult& result = report.result;
         progress.finish();
         trace.commit();
+        if (run_log) {
+            run_log->close();
+        }
 
         AtomicFile summary(out / "summary.json");
         nlohmann::json summary_json = lessons::run_summary(run, result, options.experiment, title);
@@ -327,7 +322,11 @@ int run_command(const RunOptions& options) {
         return kExitLinkFailed;
     } catch (const lessons::LinkSilent& failure) {
         std::cerr << "error: " << failure.what() << " from " << link.describe()
-                  << " (did legofeup-sim stop?); nothing was written\n";
+                  << " (did legofeup-sim stop?); nothing was written"
+                  << (options.record_file.empty()
+                          ? std::string()
+                          : " but the run log " + options.record_file + " (steps so far)")
+                  << '\n';
         return kExitLinkFailed;
     } catch (const std::exception& failure) {
         std::cerr << "error: " << failure.what() << '\n';
@@ -348,7 +347,7 @@ int experiments_command() {
 int config_command(const RunOptions& options) {
     std::string title;
     try {
-        const RunConfig config = build_config(options, title);
+        const RunConfig config = compose_cli_config(options, title);
         lessons::resolve(config);  // refuse to print a configuration that would not run
         std::cout << lessons::config_to_toml(config, "LegoFeup Lab — " + title);
     } catch (const InputError& error) {

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "config_choice.hpp"
+
 namespace legofeup::cli {
 
 inline constexpr int kExitOk = 0;
@@ -14,11 +16,7 @@ inline constexpr int kExitBadInput = 1;
 inline constexpr int kExitOutputFailed = 2;
 inline constexpr int kExitLinkFailed = 3;
 
-struct RunOptions {
-    std::string experiment;  ///< "a" … "f", or empty for the defaults
-    std::string config_file;
-    std::optional<std::uint64_t> seed;
-    std::optional<int> laps;
+struct RunOptions : ConfigChoice {
     std::string out_directory;
     bool plots = true;
     bool quiet = false;
@@ -30,6 +28,9 @@ struct RunOptions {
     std::string profile;    ///< robot profile TOML: geometry and IR curve; NXT wiring
     int truth_port = 0;     ///< 0: the robot port + 1
     int control_port = 0;   ///< 0: the robot port + 2
+
+    /// --record: the run log every step goes to ("": none), docs/recording.md.
+    std::string record_file;
 };
 
 int run_command(const RunOptions& options);

@@ -3,9 +3,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "analysis_commands.hpp"
 #include "calibrate_commands.hpp"
 #include "commands.hpp"
+#include "grade_command.hpp"
 #include "legofeup/version.hpp"
+#include "lesson_commands.hpp"
+#include "refilter_command.hpp"
+#include "report_command.hpp"
 
 int main(int argc, char** argv) {
     using namespace legofeup::cli;
@@ -14,20 +19,9 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
 
     RunOptions options;
-    const auto add_config_options = [&](CLI::App* command) {
-        command->add_option("--experiment,-e", options.experiment,
-                            "Guided experiment a … f (its preset is applied first)");
-        command
-            ->add_option("--config,-c", options.config_file,
-                         "TOML configuration applied over the experiment's preset")
-            ->check(CLI::ExistingFile);
-        command->add_option("--seed,-s", options.seed, "Seed of every random stream");
-        command->add_option("--laps,-l", options.laps, "Laps of the square path")
-            ->check(CLI::Range(1, 1000));
-    };
 
     CLI::App* run = app.add_subcommand("run", "Run one experiment and write its results");
-    add_config_options(run);
+    add_config_options(*run, options);
     run->add_option("--out,-o", options.out_directory,
                     "Directory for trace.csv, summary.json and the plots")
         ->required();
@@ -52,15 +46,30 @@ int main(int argc, char** argv) {
     run->add_option("--control-port", options.control_port,
                     "The simulator's control port (default: link port + 2)")
         ->check(CLI::Range(1, 65535));
+    run->add_option("--record", options.record_file,
+                    "Also record every step (raw frames, commands, truth, configuration) to this "
+                    "run log, flushed as it goes, for refilter (docs/recording.md)");
 
     app.add_subcommand("experiments", "List the guided experiments a … f");
 
     CLI::App* config = app.add_subcommand(
         "config", "Print the configuration a run would use, as a TOML file to edit");
-    add_config_options(config);
+    add_config_options(*config, options);
 
     CalibrateOptions calibrate;
     add_calibrate_subcommands(app, calibrate);
+    LessonOptions lesson;
+    add_lesson_subcommands(app, lesson);
+    AnalysisOptions analysis;
+    add_analysis_subcommands(app, analysis);
+    RefilterOptions refilter;
+    add_refilter_subcommand(app, refilter);
+
+    GradeOptions grade;
+    add_grade_subcommand(app, grade);
+
+    ReportOptions report;
+    add_report_subcommand(app, report);
 
     CLI11_PARSE(app, argc, argv);
 
@@ -69,6 +78,21 @@ int main(int argc, char** argv) {
     }
     if (calibrate.requested()) {
         return calibrate_command(calibrate);
+    }
+    if (lesson.requested()) {
+        return lesson_command(lesson);
+    }
+    if (analysis.requested()) {
+        return analysis_command(analysis);
+    }
+    if (refilter.requested()) {
+        return refilter_command(refilter);
+    }
+    if (app.got_subcommand("grade")) {
+        return grade_command(grade);
+    }
+    if (app.got_subcommand("report")) {
+        return report_command(report);
     }
     if (app.got_subcommand("experiments")) {
         return experiments_command();

@@ -124,6 +124,7 @@ const LoopSnapshot& LegoFeupLoop::step(const SensorFrame& frame) {
     s.time = frame.time;
     s.sequence = frame.sequence;
     s.frame_missing = false;
+    s.frame = frame;
 
     predict_from_encoders(frame);
     observe_and_update(frame);
@@ -136,6 +137,8 @@ const LoopSnapshot& LegoFeupLoop::step_without_frame(double time) {
     s.step = ++steps_;
     s.time = time;
     s.frame_missing = true;
+    s.frame = SensorFrame{};
+    s.frame.time = time;
 
     // Eq. 11–13 with d = Δθ = 0: X̂ is unchanged and P ← P + ∇f_q Q ∇f_qᵀ. A period passed
     // in which the robot moved in some unknown way; its odometry arrives with the next frame.

@@ -1,7 +1,6 @@
 #include "legofeup/lessons/config_file.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -9,6 +8,7 @@
 #include "legofeup/lessons/config_schema.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "text_file.hpp"
 #include "toml_values.hpp"
 
 namespace legofeup::lessons {
@@ -232,14 +232,9 @@ void apply_config_toml(std::string_view text, const std::string& source, RunConf
 }
 
 RunConfig load_config_file(const std::filesystem::path& path, const RunConfig& base) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        throw InputError({{path.string(), 0, "", "", "cannot open the configuration file"}});
-    }
-    std::stringstream text;
-    text << file.rdbuf();
     RunConfig config = base;
-    apply_config_toml(text.str(), path.string(), config, path.parent_path());
+    apply_config_toml(read_text_file(path, "configuration"), path.string(), config,
+                      path.parent_path());
     return config;
 }
 

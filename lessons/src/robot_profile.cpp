@@ -15,6 +15,7 @@
 #include "legofeup/core/angles.hpp"
 #include "legofeup/core/config_issue.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "text_file.hpp"
 #include "toml_values.hpp"
 
 namespace legofeup::lessons {
@@ -331,13 +332,7 @@ RobotProfile parse_robot_profile(std::string_view text, const std::string& sourc
 }
 
 RobotProfile load_robot_profile(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        throw InputError({{path, 0, "", "", "cannot open the robot profile"}});
-    }
-    std::stringstream text;
-    text << file.rdbuf();
-    return parse_robot_profile(text.str(), path);
+    return parse_robot_profile(read_text_file(path, "robot profile"), path);
 }
 
 std::string robot_profile_to_toml(const RobotProfile& profile) {

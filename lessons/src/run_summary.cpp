@@ -61,6 +61,17 @@ nlohmann::json metrics_to_json(const RunMetrics& m) {
     };
 }
 
+nlohmann::json result_metrics_to_json(const RunResult& result) {
+    nlohmann::json metrics = metrics_to_json(result.metrics);
+    metrics["wall_time_s"] = result.wall_seconds;
+    metrics["real_time_factor"] =
+        result.wall_seconds > 0.0 ? result.metrics.duration / result.wall_seconds : 0.0;
+    metrics["routine_finished"] = result.routine_finished;
+    metrics["frames_missing"] = result.frames_missing;
+    metrics["steps_without_truth"] = result.steps_without_truth;
+    return metrics;
+}
+
 nlohmann::json run_summary(const ResolvedRun& run, const RunResult& result,
                            std::string_view experiment, std::string_view title) {
     nlohmann::json walls = nlohmann::json::array();
@@ -69,20 +80,13 @@ nlohmann::json run_summary(const ResolvedRun& run, const RunResult& result,
                          {"from", {wall.start.x(), wall.start.y()}},
                          {"to", {wall.end.x(), wall.end.y()}}});
     }
-    nlohmann::json metrics = metrics_to_json(result.metrics);
-    metrics["wall_time_s"] = result.wall_seconds;
-    metrics["real_time_factor"] =
-        result.wall_seconds > 0.0 ? result.metrics.duration / result.wall_seconds : 0.0;
-    metrics["routine_finished"] = result.routine_finished;
-    metrics["frames_missing"] = result.frames_missing;
-    metrics["steps_without_truth"] = result.steps_without_truth;
     return {
         {"experiment", experiment},
         {"title", title},
         {"seed", run.config.seed},
         {"config", config_to_json(run.config)},
         {"world", {{"name", run.world.name}, {"walls", walls}}},
-        {"metrics", metrics},
+        {"metrics", result_metrics_to_json(result)},
     };
 }
 

@@ -1,13 +1,12 @@
 #include "legofeup/lessons/world_file.hpp"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "config_reader.hpp"
 #include "legofeup/core/angles.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "standard_arena_resource.hpp"
+#include "text_file.hpp"
 #include "toml_values.hpp"
 
 namespace legofeup::lessons {
@@ -172,13 +171,7 @@ sim::WorldSpec parse_world(std::string_view text, const std::string& source) {
 }
 
 sim::WorldSpec load_world_file(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        throw InputError({{path.string(), 0, "", "", "cannot open the world file"}});
-    }
-    std::stringstream text;
-    text << file.rdbuf();
-    return parse_world(text.str(), path.string());
+    return parse_world(read_text_file(path, "world"), path.string());
 }
 
 const sim::WorldSpec& built_in_world() {

@@ -362,6 +362,181 @@ void draw_legend(cairo_t* cr, const Panel& panel, const Mapping& m) {
     }
 }
 
+// Colour maps, as control points interpolated linearly in RGB.
+Color interpolate(const std::vector<Color>& stops, double t) {
+    t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * static_cast<double>(stops.size() - 1);
+    const auto i = std::min(static_cast<std::size_t>(t), stops.size() - 2);
+    const double f = t - static_cast<double>(i);
+    const Color& a = stops[i];
+    const Color& b = stops[i + 1];
+    return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b), 1.0};
+}
+// Dark to bright, perceptually ordered (after matplotlib's viridis).
+const std::vector<Color> kSequential = {{0.267, 0.005, 0.329},
+                                        {0.230, 0.322, 0.546},
+                                        {0.128, 0.567, 0.551},
+                                        {0.369, 0.789, 0.383},
+                                        {0.993, 0.906, 0.144}};
+// Blue, white, red (after Moreland's cool-warm).
+const std::vector<Color> kDiverging = {
+    {0.230, 0.299, 0.754}, {0.865, 0.865, 0.865}, {0.706, 0.016, 0.150}};
+
+// The value a heat-map cell is coloured by.
+double colour_value(const HeatMap& map, double value) {
+    if (!map.log_scale) {
+        return value;
+    }
+    return value > 0.0 ? std::log10(value) : std::numeric_limits<double>::quiet_NaN();
+}
+
+// The colour range [low, high] of a heat map, in colour_value units.
+Range colour_range(const HeatMap& map) {
+    Range range;
+    for (const double value : map.values) {
+        range.include(colour_value(map, value));
+    }
+    if (map.min) {
+        range.low = colour_value(map, *map.min);
+    }
+    if (map.max) {
+        range.high = colour_value(map, *map.max);
+    }
+    if (!range.valid()) {
+        range = {0.0, 1.0};
+    }
+    if (map.diverging && !map.min && !map.max) {
+        const double centre = colour_value(map, map.centre);
+        const double half = std::max(std::abs(range.low - centre), std::abs(range.high - centre));
+        range = {centre - half, centre + half};
+    }
+    if (range.span() <= 0.0) {
+        range = {range.low - 0.5, range.high + 0.5};
+    }
+    return range;
+}
+
+Color cell_colour(const HeatMap& map, const Range& range, double value) {
+    const double v = colour_value(map, value);
+    if (!std::isfinite(v)) {
+        return {0.75, 0.75, 0.75};
+    }
+    return interpolate(map.diverging ? kDiverging : kSequential, (v - range.low) / range.span());
+}
+
+// Ticks of a colour bar, in colour units: on a log scale at 1, 2 and 5 × 10^k (only 10^k when
+// that gives enough), otherwise at round numbers.
+std::vector<double> colour_bar_ticks(const Range& range, bool log_scale) {
+    if (!log_scale) {
+        return nice_ticks(range.low, range.high, 5);
+    }
+    std::vector<double> decades;
+    std::vector<double> all;
+    for (double k = std::floor(range.low); k <= range.high; k += 1.0) {
+        for (const double factor : {1.0, 2.0, 5.0}) {
+            const double tick = k + std::log10(factor);
+            if (tick >= range.low && tick <= range.high) {
+                all.push_back(tick);
+                if (factor == 1.0) {
+                    decades.push_back(tick);
+                }
+            }
+        }
+    }
+    return decades.size() >= 3 ? decades : all;
+}
+
+// Cells left to right and bottom to top, each value written in its cell, labels under and
+// left of the grid, and a colour bar with ticks at the right.
+void draw_heat_map(cairo_t* cr, const Panel& panel, const Rect& area) {
+    const HeatMap& map = *panel.heat_map;
+    const std::size_t columns = std::max<std::size_t>(map.column_labels.size(), 1);
+    const std::size_t rows = std::max<std::size_t>(map.row_labels.size(), 1);
+    constexpr double kBarGap = 24.0;
+    constexpr double kBarWidth = 18.0;
+    constexpr double kBarLabels = 80.0;
+    const Rect grid{area.x, area.y, area.w - kBarGap - kBarWidth - kBarLabels, area.h};
+    const double cell_w = grid.w / static_cast<double>(columns);
+    const double cell_h = grid.h / static_cast<double>(rows);
+    const Range range = colour_range(map);
+    for (std::size_t row = 0; row < rows; ++row) {
+        for (std::size_t column = 0; column < columns; ++column) {
+            const std::size_t k = row * columns + column;
+            const double value =
+                k < map.values.size() ? map.values[k] : std::numeric_limits<double>::quiet_NaN();
+            const Color colour = cell_colour(map, range, value);
+            const double x = grid.x + cell_w * static_cast<double>(column);
+            const double y = grid.y + grid.h - cell_h * static_cast<double>(row + 1);
+            set_color(cr, colour);
+            cairo_rectangle(cr, x, y, cell_w, cell_h);
+            cairo_fill(cr);
+            if (k < map.cell_text.size()) {
+                // Dark text on bright cells, white on dark ones (relative luminance).
+                const double luminance = 0.2126 * colour.r + 0.7152 * colour.g + 0.0722 * colour.b;
+                set_color(cr, luminance > 0.5 ? Color{0.05, 0.05, 0.05} : Color{1.0, 1.0, 1.0});
+                text_at(cr, map.cell_text[k], x + cell_w / 2.0, y + cell_h / 2.0, 0.5, 0.5);
+            }
+        }
+    }
+    set_color(cr, {1.0, 1.0, 1.0});
+    cairo_set_line_width(cr, 1.0);
+    for (std::size_t column = 1; column < columns; ++column) {
+        cairo_move_to(cr, grid.x + cell_w * static_cast<double>(column), grid.y);
+        cairo_line_to(cr, grid.x + cell_w * static_cast<double>(column), grid.y + grid.h);
+    }
+    for (std::size_t row = 1; row < rows; ++row) {
+        cairo_move_to(cr, grid.x, grid.y + cell_h * static_cast<double>(row));
+        cairo_line_to(cr, grid.x + grid.w, grid.y + cell_h * static_cast<double>(row));
+    }
+    cairo_stroke(cr);
+    set_color(cr, {0.15, 0.15, 0.15});
+    for (std::size_t column = 0; column < map.column_labels.size(); ++column) {
+        text_at(cr, map.column_labels[column],
+                grid.x + cell_w * (static_cast<double>(column) + 0.5), grid.y + grid.h + 6.0, 0.5,
+                0.0);
+    }
+    for (std::size_t row = 0; row < map.row_labels.size(); ++row) {
+        text_at(cr, map.row_labels[row], grid.x - 6.0,
+                grid.y + grid.h - cell_h * (static_cast<double>(row) + 0.5), 1.0, 0.5);
+    }
+    cairo_rectangle(cr, grid.x, grid.y, grid.w, grid.h);
+    cairo_stroke(cr);
+    text_at(cr, panel.x_label, grid.x + grid.w / 2.0, grid.y + grid.h + 24.0, 0.5, 0.0);
+    cairo_save(cr);
+    cairo_translate(cr, grid.x - 62.0, grid.y + grid.h / 2.0);
+    cairo_rotate(cr, -M_PI / 2.0);
+    text_at(cr, panel.y_label, 0.0, 0.0, 0.5, 0.5);
+    cairo_restore(cr);
+    text_at(cr, panel.title, grid.x, grid.y - 8.0, 0.0, 1.0, kTitleSize, true);
+
+    // The colour bar: the map from bottom (low) to top (high), ticked in value units.
+    const Rect bar{grid.x + grid.w + kBarGap, grid.y, kBarWidth, grid.h};
+    constexpr int kBarSteps = 64;
+    for (int i = 0; i < kBarSteps; ++i) {
+        const double t = (i + 0.5) / kBarSteps;
+        set_color(cr, interpolate(map.diverging ? kDiverging : kSequential, t));
+        cairo_rectangle(cr, bar.x, bar.y + bar.h * (1.0 - (i + 1.0) / kBarSteps), bar.w,
+                        bar.h / kBarSteps + 0.5);
+        cairo_fill(cr);
+    }
+    set_color(cr, {0.15, 0.15, 0.15});
+    cairo_rectangle(cr, bar.x, bar.y, bar.w, bar.h);
+    cairo_stroke(cr);
+    for (const double tick : colour_bar_ticks(range, map.log_scale)) {
+        const double y = bar.y + bar.h * (1.0 - (tick - range.low) / range.span());
+        cairo_move_to(cr, bar.x + bar.w, y);
+        cairo_line_to(cr, bar.x + bar.w + 4.0, y);
+        cairo_stroke(cr);
+        char label[32];
+        std::snprintf(label, sizeof label, "%.3g", map.log_scale ? std::pow(10.0, tick) : tick);
+        text_at(cr, label, bar.x + bar.w + 6.0, y, 0.0, 0.5);
+    }
+    cairo_save(cr);
+    cairo_translate(cr, bar.x + bar.w + kBarLabels, bar.y + bar.h / 2.0);
+    cairo_rotate(cr, -M_PI / 2.0);
+    text_at(cr, map.colour_label, 0.0, 0.0, 0.5, 1.0);
+    cairo_restore(cr);
+}
+
 void render(cairo_t* cr, const std::string& title, const std::vector<Panel>& panels, int width,
             int height) {
     cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
@@ -373,6 +548,10 @@ void render(cairo_t* cr, const std::string& title, const std::vector<Panel>& pan
         const double top = kFigureTitleHeight + panel_height * static_cast<double>(i);
         const Rect area{kMarginLeft, top + kMarginTop, width - kMarginLeft - kMarginRight,
                         panel_height - kMarginTop - kMarginBottom};
+        if (panels[i].heat_map) {
+            draw_heat_map(cr, panels[i], area);
+            continue;
+        }
         const Mapping mapping = make_mapping(panels[i], area);
         draw_contents(cr, panels[i], mapping);
         draw_axes(cr, panels[i], mapping);
@@ -403,7 +582,7 @@ void Figure::write(const std::string& base) const {
                      cairo_surface_destroy);
     {
         ContextPtr cr(cairo_create(image.get()), cairo_destroy);
-        render(cr.get(), title_, panels_, width_, height_);
+        draw(cr.get());
         check(cairo_status(cr.get()), png);
     }
     check(cairo_surface_write_to_png(image.get(), png.c_str()), png);
@@ -414,11 +593,42 @@ void Figure::write(const std::string& base) const {
     check(cairo_surface_status(vector.get()), svg);
     {
         ContextPtr cr(cairo_create(vector.get()), cairo_destroy);
-        render(cr.get(), title_, panels_, width_, height_);
+        draw(cr.get());
         check(cairo_status(cr.get()), svg);
     }
     cairo_surface_finish(vector.get());
     check(cairo_surface_status(vector.get()), svg);
+}
+
+std::string Figure::svg() const {
+    using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+    using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
+
+    std::string document;
+    const cairo_write_func_t append = [](void* closure, const unsigned char* data,
+                                         unsigned int length) {
+        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+        return CAIRO_STATUS_SUCCESS;
+    };
+    SurfacePtr vector(cairo_svg_surface_create_for_stream(append, &document, width_, height_),
+                      cairo_surface_destroy);
+    check(cairo_surface_status(vector.get()), "SVG of " + title_);
+    {
+        ContextPtr cr(cairo_create(vector.get()), cairo_destroy);
+        draw(cr.get());
+        check(cairo_status(cr.get()), "SVG of " + title_);
+    }
+    cairo_surface_finish(vector.get());
+    check(cairo_surface_status(vector.get()), "SVG of " + title_);
+    return document;
+}
+
+void Figure::draw(cairo_t* cr) const {
+    cairo_save(cr);
+    cairo_rectangle(cr, 0.0, 0.0, width_, height_);
+    cairo_clip(cr);
+    render(cr, title_, panels_, width_, height_);
+    cairo_restore(cr);
 }
 
 }  // namespace legofeup::plot

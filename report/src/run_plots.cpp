@@ -15,7 +15,6 @@ using plot::Figure;
 using plot::Line;
 namespace colors = plot::colors;
 
-constexpr int kWidth = 1200;
 constexpr double kEllipseInterval = 5.0;  // s between the ellipses drawn on the trajectory
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
@@ -44,9 +43,14 @@ plot::Ellipse sigma_ellipse(const RunRecording::Step& step) {
     return e;
 }
 
-void trajectory(const RunRecording& rec, const sim::WorldSpec& world, const std::string& base,
-                const std::string& title) {
-    Figure figure(title + " — trajectory", 1, kWidth, 1100);
+// A height in proportion to the width, as designed for a 1200-pixel-wide figure.
+int height_for(int width, int height_at_1200) {
+    return static_cast<int>(std::lround(width * (height_at_1200 / 1200.0)));
+}
+
+Figure trajectory(const RunRecording& rec, const sim::WorldSpec& world, const std::string& title,
+                  int width) {
+    Figure figure(title + " — trajectory", 1, width, height_for(width, 1100));
     plot::Panel& p = figure.panel(0);
     p.title = "True, estimated (with 1σ ellipses every 5 s) and odometry-only paths";
     p.x_label = "x (m)";
@@ -72,11 +76,11 @@ void trajectory(const RunRecording& rec, const sim::WorldSpec& world, const std:
             next += kEllipseInterval;
         }
     }
-    figure.write(base);
+    return figure;
 }
 
-void errors(const RunRecording& rec, const std::string& base, const std::string& title) {
-    Figure figure(title + " — estimation error", 3, kWidth, 1000);
+Figure errors(const RunRecording& rec, const std::string& title, int width) {
+    Figure figure(title + " — estimation error", 3, width, height_for(width, 1000));
     const auto& s = rec.steps();
     const auto t = column(s, [](auto& k) { return k.time; });
     struct Component {
@@ -107,11 +111,11 @@ void errors(const RunRecording& rec, const std::string& base, const std::string&
                                   }),
                            colors::kEstimate, 1.5, false, "error"});
     }
-    figure.write(base);
+    return figure;
 }
 
-void covariance(const RunRecording& rec, const std::string& base, const std::string& title) {
-    Figure figure(title + " — covariance", 3, kWidth, 1000);
+Figure covariance(const RunRecording& rec, const std::string& title, int width) {
+    Figure figure(title + " — covariance", 3, width, height_for(width, 1000));
     const auto& s = rec.steps();
     const auto t = column(s, [](auto& k) { return k.time; });
     const char* names[] = {"Px (m²)", "Py (m²)", "Pθ (rad²)"};
@@ -124,7 +128,7 @@ void covariance(const RunRecording& rec, const std::string& base, const std::str
         p.lines.push_back({t, column(s, [&](auto& k) { return k.covariance(row, row); }),
                            colors::kEstimate, 1.5, false, ""});
     }
-    figure.write(base);
+    return figure;
 }
 
 // One panel of two time series (the IR distances, the wheel speeds).
@@ -134,10 +138,11 @@ struct TimeSeries {
     const char* label;
 };
 
-void two_series(const RunRecording& rec, const std::string& base, const std::string& title,
-                const std::string& panel_title, const std::string& y_label, const TimeSeries& first,
-                const TimeSeries& second, std::optional<double> y_max = std::nullopt) {
-    Figure figure(title, 1, kWidth, 520);
+Figure two_series(const RunRecording& rec, const std::string& title, int width,
+                  const std::string& panel_title, const std::string& y_label,
+                  const TimeSeries& first, const TimeSeries& second,
+                  std::optional<double> y_max = std::nullopt) {
+    Figure figure(title, 1, width, height_for(width, 520));
     plot::Panel& p = figure.panel(0);
     p.title = panel_title;
     p.x_label = "t (s)";
@@ -151,7 +156,7 @@ void two_series(const RunRecording& rec, const std::string& base, const std::str
     for (const TimeSeries& series : {first, second}) {
         p.lines.push_back({t, column(s, series.pick), series.color, 1.2, false, series.label});
     }
-    figure.write(base);
+    return figure;
 }
 
 }  // namespace
@@ -171,26 +176,57 @@ void RunRecording::on_step(const LoopSnapshot& snapshot, const GroundTruth& trut
     steps_.push_back(step);
 }
 
+RunRecording RunRecording::thinned(std::size_t max_steps) const {
+    RunRecording kept;
+    if (steps_.empty() || max_steps == 0) {
+        return kept;
+    }
+    const std::size_t stride = (steps_.size() + max_steps - 1) / max_steps;  // ⌈n / max⌉
+    for (std::size_t i = 0; i < steps_.size(); i += stride) {
+        kept.steps_.push_back(steps_[i]);
+    }
+    if ((steps_.size() - 1) % stride != 0 && kept.steps_.size() < max_steps) {
+        kept.steps_.push_back(steps_.back());
+    } else if ((steps_.size() - 1) % stride != 0) {
+        kept.steps_.back() = steps_.back();
+    }
+    return kept;
+}
+
+std::vector<RunFigure> run_figures(const RunRecording& recording, const sim::WorldSpec& world,
+                                   const std::string& title, int width) {
+    std::vector<RunFigure> figures;
+    figures.push_back({"trajectory", trajectory(recording, world, title, width)});
+    figures.push_back({"errors", errors(recording, title, width)});
+    figures.push_back({"covariance", covariance(recording, title, width)});
+    figures.push_back(
+        {"ir_distances",
+         two_series(recording, title + " — IR distances", width,
+                    "IR distances ds1 (front) and ds2 (rear), in range only", "distance (m)",
+                    {[](const RunRecording::Step& k) { return k.ir_distance[0]; }, colors::kFront,
+                     "ds1 (front)"},
+                    {[](const RunRecording::Step& k) { return k.ir_distance[1]; }, colors::kRear,
+                     "ds2 (rear)"},
+                    0.32)});
+    figures.push_back({"wheel_speeds",
+                       two_series(recording, title + " — wheel speeds", width,
+                                  "Commanded wheel speeds V1 (right) and V2 (left)", "speed (m/s)",
+                                  {[](const RunRecording::Step& k) { return k.wheels.right; },
+                                   colors::kFront, "V1 (right)"},
+                                  {[](const RunRecording::Step& k) { return k.wheels.left; },
+                                   colors::kRear, "V2 (left)"})});
+    return figures;
+}
+
 std::vector<std::string> write_run_plots(const RunRecording& recording, const sim::WorldSpec& world,
                                          const std::filesystem::path& directory,
                                          const std::string& title) {
-    const auto path = [&](const char* name) { return (directory / name).string(); };
-    trajectory(recording, world, path("trajectory"), title);
-    errors(recording, path("errors"), title);
-    covariance(recording, path("covariance"), title);
-    two_series(
-        recording, path("ir_distances"), title + " — IR distances",
-        "IR distances ds1 (front) and ds2 (rear), in range only", "distance (m)",
-        {[](const RunRecording::Step& k) { return k.ir_distance[0]; }, colors::kFront,
-         "ds1 (front)"},
-        {[](const RunRecording::Step& k) { return k.ir_distance[1]; }, colors::kRear, "ds2 (rear)"},
-        0.32);
-    two_series(
-        recording, path("wheel_speeds"), title + " — wheel speeds",
-        "Commanded wheel speeds V1 (right) and V2 (left)", "speed (m/s)",
-        {[](const RunRecording::Step& k) { return k.wheels.right; }, colors::kFront, "V1 (right)"},
-        {[](const RunRecording::Step& k) { return k.wheels.left; }, colors::kRear, "V2 (left)"});
-    return {"trajectory", "errors", "covariance", "ir_distances", "wheel_speeds"};
+    std::vector<std::string> names;
+    for (const RunFigure& figure : run_figures(recording, world, title)) {
+        figure.figure.write((directory / figure.name).string());
+        names.push_back(figure.name);
+    }
+    return names;
 }
 
 }  // namespace legofeup::report

@@ -215,7 +215,7 @@ TEST_F(RobotProfileFile, ListsEveryProblemOfAFileAtOnce) {
                   + ":5: ir_curve.c_m = true: must be a number");
     const std::string missing = (dir_ / "none.toml").string();
     EXPECT_EQ(input_error_of([&] { load_robot_profile(missing); }),
-              missing + ": cannot open the robot profile");
+              missing + ": cannot open the robot profile file");
 }
 
 TEST_F(RobotProfileFile, SavesAtomicallyAndNeverWritesAnInvalidProfile) {

@@ -49,6 +49,13 @@ class ProgramTest : public ::testing::Test {
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
     }
 
+    /// Writes `text` to the file `name` in the test's directory; its path.
+    std::filesystem::path write_file(const std::string& name, const std::string& text) const {
+        const std::filesystem::path path = dir_ / name;
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+
     /// Starts `program arguments` in the background, its output in `<name>.log`; the test's
     /// end stops it.
     void start_in_background(const std::string& program, const std::string& arguments,

@@ -10,6 +10,7 @@
 #include "legofeup/core/ir_geometry.hpp"
 #include "legofeup/core/motion.hpp"
 #include "legofeup/core/odometry.hpp"
+#include "legofeup/core/sensor_frame.hpp"
 #include "legofeup/core/sharp_ir.hpp"
 #include "legofeup/core/state.hpp"
 #include "legofeup/core/wall_association.hpp"
@@ -31,6 +32,9 @@ struct LoopSnapshot {
     /// No frame came this period (lost or late on a real link): the loop only predicted,
     /// with no odometry increment, and the controller ran on the prediction.
     bool frame_missing = false;
+    /// The raw frame exactly as the loop received it, for recording and replay
+    /// (lessons/recording); when frame_missing, a default frame stamped with the due time.
+    SensorFrame frame;
 
     // Estimation module.
     StateVector estimate = StateVector::Zero();            ///< X̂ after this step

@@ -1,6 +1,7 @@
 #pragma once
-// The guided experiments a–f as data: resources/experiments/legofeup.toml, built into the
-// programs. Each one is a title, instructions, the expected conclusion, and a configuration.
+// The guided experiments a–f: the steps of the built-in LegoFeup lesson
+// (resources/lessons/legofeup.toml, lesson.hpp), seen as what the programs run. Each one is a
+// title, instructions, the expected conclusion, and a configuration.
 
 #include <string>
 #include <string_view>
@@ -23,8 +24,5 @@ const std::vector<Experiment>& legofeup_experiments();
 
 /// The experiment with this id, or nullptr.
 const Experiment* find_experiment(std::string_view id);
-
-/// Parses an experiments document (the built-in one, or a teacher's). Throws InputError.
-std::vector<Experiment> parse_experiments(std::string_view text, const std::string& source);
 
 }  // namespace legofeup::lessons

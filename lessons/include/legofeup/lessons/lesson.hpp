@@ -20,7 +20,8 @@
 namespace legofeup::lessons {
 
 /// One automatic check on a metric of summary.json's "metrics" object, written in a lesson
-/// as "final_position_error_m > 0.2" or "mean_nees within nees_95_bounds".
+/// as "final_position_error_m > 0.2", "mean_nees within nees_95_bounds", or "routine_finished"
+/// (a true/false metric that must be true: read as GreaterOrEqual 1).
 struct MetricCheck {
     enum class Op : std::uint8_t { Less, LessOrEqual, Greater, GreaterOrEqual, Within };
     std::string metric;  ///< e.g. "final_position_error_m"

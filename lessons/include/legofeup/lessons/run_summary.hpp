@@ -14,6 +14,10 @@ nlohmann::json config_to_json(const RunConfig& config);
 
 nlohmann::json metrics_to_json(const RunMetrics& metrics);
 
+/// summary.json's "metrics" object: metrics_to_json of the run's metrics plus how the run
+/// went (routine_finished, frames_missing, wall time, …). Lesson checks name its keys.
+nlohmann::json result_metrics_to_json(const RunResult& result);
+
 nlohmann::json run_summary(const ResolvedRun& run, const RunResult& result,
                            std::string_view experiment, std::string_view title);
 

@@ -26,7 +26,9 @@ struct Submission {
     std::map<std::string, std::map<std::string, std::string>> answers;
     /// The graded step's configuration: its preset with the [tuning] overlay applied.
     RunConfig tuned;
-    /// The [tuning] table as written (TOML text), to show and to save back.
+    /// The [tuning] table's settings as a run-configuration document ("[filter]\nq11 =
+    /// 2e-07\n", values in their shortest exact form), to show, to apply over the preset
+    /// with apply_config_toml, and to save back. Empty when the submission tunes nothing.
     std::string tuning_toml;
     std::string source;
 };
@@ -38,6 +40,14 @@ Submission parse_submission(std::string_view text, const std::string& source, co
 Submission load_submission_file(const std::filesystem::path& path, const Lesson& lesson);
 
 /// The TOML document parse_submission reads back to the same students, answers and tuning.
+/// `tuning_toml` is written under [tuning] (its [section] headers become [tuning.section]),
+/// so it must be a run-configuration document as parse_submission and tuning_to_toml make.
 std::string submission_to_toml(const Submission& submission);
+
+/// The settings of `tuned` that the lesson lets students tune and that differ from the graded
+/// step's preset, as a run-configuration document ("[filter]\nq11 = 2e-07\n"): what a
+/// Submission's tuning_toml holds when the GUI builds one. Empty if nothing changed or the
+/// lesson grades no step.
+std::string tuning_to_toml(const RunConfig& tuned, const Lesson& lesson);
 
 }  // namespace legofeup::lessons

@@ -1,11 +1,16 @@
 #pragma once
 // Minimal scientific figures drawn with cairo, written as PNG and SVG from the same drawing
-// code: panels with axes, ticks, grid, lines, ±σ bands, ellipses and a legend. Only what the
-// CLI's run plots need; the GUI plots with QCustomPlot.
+// code: panels with axes, ticks, grid, lines, ±σ bands, ellipses and a legend, or heat maps.
+// Only what the CLI's run plots, the analysis plots and the student report need; the GUI plots with
+// QCustomPlot. A figure can be written to files, returned as an SVG document, or drawn onto any
+// cairo context (the report's PDF pages).
 
 #include <optional>
 #include <string>
 #include <vector>
+
+// cairo's context, declared as cairo.h does, so users of figures need not see cairo's headers.
+typedef struct _cairo cairo_t;  // NOLINT(modernize-use-using): must match cairo.h
 
 namespace legofeup::plot {
 
@@ -54,6 +59,24 @@ struct Segment {
     double width = 4.0;
 };
 
+/// A grid of coloured cells, e.g. a parameter sweep, with a colour bar at the right. A panel
+/// with a heat map shows only it (its lines, bands, … are ignored).
+struct HeatMap {
+    std::vector<std::string> column_labels;  ///< along x, left to right
+    std::vector<std::string> row_labels;     ///< along y, bottom to top
+    /// Row-major, values[row · columns + column]; NaN cells are grey.
+    std::vector<double> values;
+    std::vector<std::string> cell_text;  ///< written in the cells (same layout); empty: none
+    bool log_scale = false;              ///< colour by log₁₀(value) (values > 0)
+    /// Blue–white–red around `centre` (a signed quantity, e.g. log₁₀(NEES/3)); otherwise a
+    /// dark-to-bright ramp (small to large).
+    bool diverging = false;
+    double centre = 0.0;
+    std::optional<double> min;  ///< colour range (default: the values'; symmetric if diverging)
+    std::optional<double> max;
+    std::string colour_label;  ///< the colour bar's label
+};
+
 struct Panel {
     std::string title;
     std::string x_label;
@@ -66,6 +89,7 @@ struct Panel {
     bool log_y = false;
     std::optional<double> y_min;  ///< clip the y range
     std::optional<double> y_max;
+    std::optional<HeatMap> heat_map;
 };
 
 class Figure {
@@ -77,6 +101,17 @@ class Figure {
 
     /// Writes `<base>.png` and `<base>.svg`. Throws std::runtime_error when it cannot.
     void write(const std::string& base) const;
+
+    /// The figure as a standalone SVG document (text as glyph outlines, no fonts needed).
+    std::string svg() const;
+
+    /// Draws the figure onto `cr` in its own units (0 … width × 0 … height): scale and
+    /// translate the context first to place it.
+    void draw(cairo_t* cr) const;
+
+    const std::string& title() const { return title_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
 
   private:
     std::string title_;

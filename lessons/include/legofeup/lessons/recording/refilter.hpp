@@ -1,0 +1,56 @@
+#pragma once
+// Re-filtering: the recorded raw readings of a run replayed through a fresh loop with other
+// settings (Q, R, gate, P0, …) — "what if" on identical noise and identical motion.
+//
+// The replay is open loop: the robot's motion is what it was, so the recorded frames (and
+// the recorded wheel commands) stand; the new loop's controller runs, but its commands are
+// ignored, since they could not have changed the recorded readings. Hence a new tuning
+// shows how the estimate would have differed, not how the robot would have driven.
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "legofeup/core/legofeup_loop.hpp"
+#include "legofeup/core/run_metrics.hpp"
+#include "legofeup/core/state.hpp"
+#include "legofeup/lessons/recording/run_log.hpp"
+#include "legofeup/lessons/run_config.hpp"
+
+namespace legofeup::lessons {
+
+/// Feeds every record of `log` into `loop` exactly as the recording loop got it: a frame
+/// with LegoFeupLoop::step, a missing frame with step_without_frame at its due time (the
+/// first frame only sets the encoder reference, as in the run). `on_step` sees each record
+/// with the loop's snapshot after it.
+void replay_run_log(const RunLog& log, LegoFeupLoop& loop,
+                    const std::function<void(const RunLogRecord&, const LoopSnapshot&)>& on_step);
+
+/// One step of a re-filtered run.
+struct RefilterStep {
+    double time = 0.0;
+    bool frame_missing = false;
+    std::optional<Pose2> truth;                      ///< none for a real robot
+    StateVector old_estimate = StateVector::Zero();  ///< replay with the recorded configuration
+    StateCovariance old_covariance = StateCovariance::Zero();
+    StateVector new_estimate = StateVector::Zero();  ///< replay with the new configuration
+    StateCovariance new_covariance = StateCovariance::Zero();
+};
+
+struct RefilterResult {
+    std::vector<RefilterStep> steps;
+    /// Metrics of each replay over the steps with a known truth (none for a real robot).
+    std::optional<RunMetrics> old_metrics;
+    std::optional<RunMetrics> new_metrics;
+    /// Largest |difference| between the old replay and the estimates / covariances stored in
+    /// the log: 0 when the replay reproduces the recorded run exactly (it should).
+    double old_replay_deviation = 0.0;
+    bool reproduces_recording() const { return old_replay_deviation == 0.0; }
+};
+
+/// Replays `log` through a loop built from its recorded configuration and through one built
+/// from `new_config` (resolve(new_config).loop), open loop (see above). Throws InputError if
+/// `new_config` does not resolve.
+RefilterResult refilter(const RunLog& log, const RunConfig& new_config);
+
+}  // namespace legofeup::lessons

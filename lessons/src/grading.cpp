@@ -1,0 +1,177 @@
+#include "legofeup/lessons/grading.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/run_summary.hpp"
+
+namespace legofeup::lessons {
+namespace {
+
+/// Mean, sample standard deviation and range of one metric over the seeds.
+struct Spread {
+    double sum = 0.0;
+    double sum_squares = 0.0;
+    double min = 0.0;
+    double max = 0.0;
+    std::size_t count = 0;
+
+    void add(double value) {
+        min = count == 0 ? value : std::min(min, value);
+        max = count == 0 ? value : std::max(max, value);
+        sum += value;
+        sum_squares += value * value;
+        ++count;
+    }
+    double mean() const { return sum / static_cast<double>(count); }
+    // s² = (Σx² − n·x̄²)/(n − 1); clamped at 0 against rounding when all values are equal.
+    double standard_deviation() const {
+        if (count < 2) {
+            return 0.0;
+        }
+        const double n = static_cast<double>(count);
+        return std::sqrt(std::max(0.0, (sum_squares - n * mean() * mean()) / (n - 1.0)));
+    }
+};
+
+/// A run's metrics without the machine-dependent ones (wall time, real-time factor).
+nlohmann::json deterministic_metrics(const ResolvedRun& run, const RunResult& result) {
+    nlohmann::json metrics = run_summary(run, result, "", "")["metrics"];
+    for (auto it = metrics.begin(); it != metrics.end();) {
+        it = is_machine_dependent_metric(it.key()) ? metrics.erase(it) : std::next(it);
+    }
+    return metrics;
+}
+
+std::optional<double> as_number(const nlohmann::json& value) {
+    if (value.is_boolean()) {
+        return value.get<bool>() ? 1.0 : 0.0;
+    }
+    if (value.is_number()) {
+        return value.get<double>();
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+bool is_machine_dependent_metric(const std::string& name) {
+    return name == "wall_time_s" || name == "real_time_factor";
+}
+
+std::vector<std::uint64_t> grading_seeds(const GradingSpec& spec, const GradingRequest& request) {
+    const int count = request.seeds > 0 ? request.seeds : spec.seeds;
+    const std::uint64_t first = request.first_seed.value_or(spec.first_seed);
+    std::vector<std::uint64_t> seeds;
+    for (int i = 0; i < count; ++i) {
+        seeds.push_back(first + static_cast<std::uint64_t>(i));
+    }
+    return seeds;
+}
+
+nlohmann::json grade_submission(const Lesson& lesson, const Submission& submission,
+                                const GradingRequest& request,
+                                const analysis::BatchProgress& progress) {
+    if (!lesson.grading) {
+        throw InputError({{lesson.source, 0, "grading", "",
+                           "the lesson has no [grading] section, so it cannot grade"}});
+    }
+    const GradingSpec& spec = *lesson.grading;
+    const std::vector<std::uint64_t> seeds = grading_seeds(spec, request);
+
+    std::vector<ResolvedRun> runs;
+    runs.reserve(seeds.size());
+    for (const std::uint64_t seed : seeds) {
+        RunConfig config = submission.tuned;
+        config.seed = seed;
+        if (request.laps) {
+            config.laps = *request.laps;
+        }
+        runs.push_back(resolve(config));
+    }
+    const std::vector<RunResult> results = analysis::run_batch(runs, request.jobs, progress);
+
+    nlohmann::json per_seed = nlohmann::json::array();
+    std::map<std::string, Spread> spreads;  // ordered by name: the JSON is reproducible
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        nlohmann::json metrics = deterministic_metrics(runs[i], results[i]);
+        for (const auto& [name, value] : metrics.items()) {
+            if (const auto number = as_number(value)) {
+                spreads[name].add(*number);
+            }
+        }
+        per_seed.push_back({{"seed", seeds[i]}, {"metrics", std::move(metrics)}});
+    }
+
+    // The checks see the mean of every metric; a bounds metric (an array) is the same for
+    // every seed — it depends on the configuration only — so the first seed's stands.
+    nlohmann::json means = nlohmann::json::object();
+    nlohmann::json aggregate = nlohmann::json::object();
+    for (const auto& [name, spread] : spreads) {
+        means[name] = spread.mean();
+        aggregate[name] = {{"mean", spread.mean()},
+                           {"std", spread.standard_deviation()},
+                           {"min", spread.min},
+                           {"max", spread.max}};
+    }
+    if (!per_seed.empty()) {
+        for (const auto& [name, value] : per_seed.front()["metrics"].items()) {
+            if (value.is_array()) {
+                means[name] = value;
+            }
+        }
+    }
+    nlohmann::json checks = nlohmann::json::array();
+    bool passed = true;
+    int checks_passed = 0;
+    for (const CheckResult& result : evaluate_checks(spec.checks, means)) {
+        checks.push_back({{"expression", result.check.expression},
+                          {"description", result.check.description},
+                          {"value", result.actual},
+                          {"passed", result.passed},
+                          {"message", result.message}});
+        passed = passed && result.passed;
+        checks_passed += result.passed ? 1 : 0;
+    }
+
+    nlohmann::json grade = {
+        {"lesson", lesson.id},
+        {"step", spec.step},
+        {"submission", submission.source},
+        {"students", submission.students},
+        {"tuning", submission.tuning_toml},
+        {"seeds", seeds},
+        {"per_seed", std::move(per_seed)},
+        {"aggregate", std::move(aggregate)},
+        {"checks", std::move(checks)},
+        {"checks_passed", checks_passed},
+        {"checks_total", spec.checks.size()},
+        {"passed", passed},
+    };
+    grade["summary"] = grading_summary(grade);
+    return grade;
+}
+
+std::string grading_summary(const nlohmann::json& grade) {
+    std::string text = grade.value("passed", false) ? "PASS" : "FAIL";
+    char counts[96];
+    std::snprintf(counts, sizeof counts, " — %d/%d checks on the mean over %zu seeds",
+                  grade.value("checks_passed", 0), grade.value("checks_total", 0),
+                  grade.contains("seeds") ? grade["seeds"].size() : std::size_t{0});
+    text += counts;
+    if (grade.contains("checks")) {
+        const char* separator = ": ";
+        for (const nlohmann::json& check : grade["checks"]) {
+            text += separator;
+            text += check.value("passed", false) ? "✓ " : "✗ ";
+            text += check.value("message", std::string{});
+            separator = "; ";
+        }
+    }
+    return text;
+}
+
+}  // namespace legofeup::lessons

@@ -1,0 +1,71 @@
+#pragma once
+// The run log's text format, shared by its writer and its reader (docs/recording.md).
+// Private to lessons/.
+//
+//   legofeup-run-log 1                  format and version
+//   program: legofeup-cli 0.4.0         header lines "key: value", in this order
+//   title: experiment f: …
+//   seed: 42
+//   world: standard arena
+//   link: lockstep
+//   config: 120 lines                   followed by that many lines of TOML
+//   columns: step,time,…                the record columns (run_log_columns())
+//   1,0.05,1,0,…                        one record per control step
+//   end: 2400 records                   written when the run ended normally
+//
+// Numbers are written shortest-round-trip (std::to_chars), so every double reads back to
+// the identical value; empty cells mean "none" (no truth, no frame).
+
+#include <charconv>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+namespace legofeup::lessons::run_log_format {
+
+inline constexpr std::string_view kProgram = "program";
+inline constexpr std::string_view kTitle = "title";
+inline constexpr std::string_view kSeed = "seed";
+inline constexpr std::string_view kWorld = "world";
+inline constexpr std::string_view kLink = "link";
+inline constexpr std::string_view kConfig = "config";
+inline constexpr std::string_view kColumns = "columns";
+inline constexpr std::string_view kEnd = "end";
+
+/// Record columns, in order.
+inline constexpr std::string_view kColumnList =
+    "step,time,sequence,frame_missing,encoder_right,encoder_left,ir_adc_front,ir_adc_rear,"
+    "ir_valid_front,ir_valid_rear,v1,v2,truth_x,truth_y,truth_theta,x,y,theta,"
+    "p_xx,p_xy,p_xtheta,p_yy,p_ytheta,p_thetatheta";
+inline constexpr int kColumnCount = 24;
+
+/// `x` shortest-round-trip; "nan", "inf", "-inf" for the non-finite.
+inline std::string number(double x) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return {buffer, result.ptr};
+}
+
+/// The whole of `text` as a T, or none.
+template <typename T>
+std::optional<T> parse(std::string_view text) {
+    T value{};
+    const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || result.ec != std::errc{} || result.ptr != text.data() + text.size()) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+/// One line of header text: line breaks would end the line early.
+inline std::string single_line(std::string text) {
+    for (char& ch : text) {
+        if (ch == '\n' || ch == '\r') {
+            ch = ' ';
+        }
+    }
+    return text;
+}
+
+}  // namespace legofeup::lessons::run_log_format
