@@ -15,7 +15,8 @@
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/ui/calibration/ir_calibration_dialog.hpp"
 #include "legofeup/ui/calibration/umbmark_dialog.hpp"
-#include "legofeup/ui/panels/experiment_panel.hpp"
+#include "legofeup/ui/lesson/lesson_panel.hpp"
+#include "legofeup/ui/refilter/refilter_dialog.hpp"
 #include "legofeup/ui/session/session.hpp"
 #include "legofeup/ui/window/app_settings.hpp"
 #include "legofeup/ui/window/appearance.hpp"
@@ -77,8 +78,8 @@ Options parse(const QApplication& app) {
         QStringLiteral("SECONDS"));
     const QCommandLineOption open_dialog(
         QStringLiteral("open-dialog"),
-        QStringLiteral("Open a dialog at start: connect, ir-calibration or umbmark (with "
-                       "--screenshot, the picture is of the dialog)."),
+        QStringLiteral("Open a dialog at start: connect, ir-calibration, umbmark or refilter "
+                       "(with --screenshot, the picture is of the dialog)."),
         QStringLiteral("NAME"));
     parser.addOptions({experiment, config, theme, large, start, speed, screenshot, after, frame_log,
                        open_dialog});
@@ -94,10 +95,11 @@ Options parse(const QApplication& app) {
     options.open_dialog = parser.value(open_dialog);
     if (!options.open_dialog.isEmpty() && options.open_dialog != QLatin1String("connect")
         && options.open_dialog != QLatin1String("ir-calibration")
-        && options.open_dialog != QLatin1String("umbmark")) {
+        && options.open_dialog != QLatin1String("umbmark")
+        && options.open_dialog != QLatin1String("refilter")) {
         std::fprintf(stderr,
-                     "legofeup: --open-dialog = %s: expected connect, ir-calibration or "
-                     "umbmark\n",
+                     "legofeup: --open-dialog = %s: expected connect, ir-calibration, umbmark "
+                     "or refilter\n",
                      qPrintable(options.open_dialog));
         std::exit(1);
     }
@@ -198,10 +200,9 @@ int main(int argc, char** argv) {
     session.setLinkChoice(link);
 
     ui::MainWindow window(session);
-    window.experimentPanel().showExperiment(!options.experiment.isEmpty() ? options.experiment
-                                            : options.config.isEmpty()
-                                                ? ui::preferences::kExperiment.read()
-                                                : QStringLiteral("f"));
+    window.lessonPanel().showStep(!options.experiment.isEmpty() ? options.experiment
+                                  : options.config.isEmpty() ? ui::preferences::kExperiment.read()
+                                                             : QStringLiteral("f"));
     if (options.large_text) {
         window.setLargeText(true);
     }
@@ -220,6 +221,8 @@ int main(int argc, char** argv) {
         dialog = window.openIrCalibration();
     } else if (options.open_dialog == QLatin1String("umbmark")) {
         dialog = window.openUmbmark();
+    } else if (options.open_dialog == QLatin1String("refilter")) {
+        dialog = window.openRefilter();
     }
     if (!options.screenshot.isEmpty()) {
         QTimer::singleShot(static_cast<int>(options.screenshot_after * 1000), &window, [&] {

@@ -58,7 +58,8 @@ TEST(ExactSum, GivesTheSameBitsInAnyOrderAndSurvivesText) {
     negative.add(-2.5);
     EXPECT_EQ(negative.value(), -2.5);
     EXPECT_EQ(ExactSum::from_text(negative.to_text())->value(), -2.5);
-    for (const char* bad : {"", "-", "12g", "0x12", std::string(40, 'f').c_str()}) {
+    for (const std::string& bad :
+         std::vector<std::string>{"", "-", "12g", "0x12", std::string(40, 'f')}) {
         EXPECT_FALSE(ExactSum::from_text(bad).has_value()) << bad;
     }
 }

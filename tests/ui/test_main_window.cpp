@@ -6,6 +6,8 @@
 #include <QComboBox>
 #include <QFile>
 #include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -15,9 +17,9 @@
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
 #include "legofeup/ui/arena/arena_view.hpp"
+#include "legofeup/ui/lesson/lesson_panel.hpp"
 #include "legofeup/ui/panels/config_panel.hpp"
 #include "legofeup/ui/panels/covariance_view.hpp"
-#include "legofeup/ui/panels/experiment_panel.hpp"
 #include "legofeup/ui/panels/setting_editor.hpp"
 #include "legofeup/ui/plots/plots_panel.hpp"
 #include "legofeup/ui/session/session.hpp"
@@ -196,24 +198,28 @@ class MainWindowTest : public QObject {
                  QStringLiteral("0.001"));
     }
 
-    void switchingExperimentPresetsAppliesThemAndShowsTheInstructions() {
-        auto& panel = window_->experimentPanel();
-        QVERIFY(panel.selectExperiment(QStringLiteral("a")));
+    void switchingLessonPresetsAppliesThemAndShowsTheInstructions() {
+        auto& panel = window_->lessonPanel();
+        QVERIFY(panel.selectStep(QStringLiteral("a")));
         QVERIFY(!session_->config().filter.wall_updates);
         QVERIFY(
             !window_->findChild<QCheckBox*>(QStringLiteral("filter.wall_updates"))->isChecked());
         QVERIFY(panel.instructions().contains(QStringLiteral("encoders")));
 
-        auto* choice = window_->findChild<QComboBox*>(QStringLiteral("experimentChoice"));
-        choice->setCurrentIndex(choice->findData(QStringLiteral("c")));
-        emit choice->activated(choice->currentIndex());
+        // Picking step c in the list shows it; its button applies the preset (and runs it).
+        auto* steps = window_->findChild<QListWidget*>(QStringLiteral("lessonSteps"));
+        steps->setCurrentRow(2);
+        QCOMPARE(panel.currentStep(), QStringLiteral("c"));
+        QVERIFY(!session_->config().filter.wall_updates);  // only shown so far
+        window_->findChild<QPushButton*>(QStringLiteral("applyAndRun"))->click();
+        QCOMPARE(session_->phase(), RunPhase::Connecting);
         QCOMPARE(session_->config().filter.r11, 1e-8);
         QCOMPARE(session_->config().physical.ir_noise, 0.01);
         QCOMPARE(window_->findChild<QLineEdit*>(QStringLiteral("filter.r11"))->text(),
                  QStringLiteral("1e-08"));
         QCOMPARE(window_->findChild<QLineEdit*>(QStringLiteral("simulator.ir_noise"))->text(),
                  QStringLiteral("0.01"));
-        QVERIFY(!panel.selectExperiment(QStringLiteral("z")));
+        QVERIFY(!panel.selectStep(QStringLiteral("z")));
     }
 
     void theKeyboardDrivesWhenThePathControllerIsOff() {

@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 #include <array>
 
+#include "legofeup/ui/panels/message_line.hpp"
 #include "legofeup/ui/panels/setting_editor.hpp"
 #include "legofeup/ui/session/session.hpp"
 
@@ -160,11 +161,7 @@ void ConfigPanel::refresh() {
 
 void ConfigPanel::showMessage(const QString& text, bool error) {
     message_is_error_ = error;
-    message_->setText(text);
-    QPalette palette = message_->palette();
-    palette.setColor(QPalette::WindowText, error ? QColor(0xd0, 0x30, 0x30)
-                                                 : this->palette().color(QPalette::WindowText));
-    message_->setPalette(palette);
+    show_message_line(*message_, text, error);
 }
 
 }  // namespace legofeup::ui

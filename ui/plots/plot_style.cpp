@@ -126,6 +126,27 @@ void apply_look(QCustomPlot& plot, const PlotLook& look) {
     }
 }
 
+void add_header(QCustomPlot& plot, const QString& title) {
+    plot.plotLayout()->insertRow(0);
+    auto* header = new QCPLayoutGrid;
+    plot.plotLayout()->addElement(0, 0, header);
+    plot.plotLayout()->setRowStretchFactor(0, 0.001);
+    plot.plotLayout()->setRowSpacing(0);
+    header->setColumnSpacing(12);
+    header->setMinimumMargins(QMargins(0, 3, 6, 0));  // off the widget's top and right edges
+    auto* label = new QCPTextElement(&plot, title);
+    label->setTextFlags(Qt::AlignLeft | Qt::AlignVCenter);
+    label->setMargins(QMargins(8, 4, 8, 0));
+    header->addElement(0, 0, label);
+    plot.legend->setVisible(true);
+    plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    plot.legend->setMargins(QMargins(4, 2, 4, 2));
+    plot.legend->setRowSpacing(0);
+    plot.legend->setColumnSpacing(10);
+    header->addElement(0, 1, plot.legend);
+    header->setColumnStretchFactors({1.0, 0.001});
+}
+
 void fit_legend(QCustomPlot& plot, int width) {
     QCPLegend& legend = *plot.legend;
     // The entries' widths (a wrapped legend's grid also has empty cells).

@@ -101,25 +101,7 @@ QCustomPlot* PlotsPanel::buildPlot(PlotKind kind) {
     plot->setPlottingHint(QCP::phFastPolylines, true);
     plot->installEventFilter(this);
 
-    // Header row: the title on the left, the legend in one row on the right.
-    plot->plotLayout()->insertRow(0);
-    auto* header = new QCPLayoutGrid;
-    plot->plotLayout()->addElement(0, 0, header);
-    plot->plotLayout()->setRowStretchFactor(0, 0.001);
-    plot->plotLayout()->setRowSpacing(0);
-    header->setColumnSpacing(12);
-    header->setMinimumMargins(QMargins(0, 3, 6, 0));  // off the widget's top and right edges
-    auto* title = new QCPTextElement(plot, QString::fromUtf8(definition.title));
-    title->setTextFlags(Qt::AlignLeft | Qt::AlignVCenter);
-    title->setMargins(QMargins(8, 4, 8, 0));
-    header->addElement(0, 0, title);
-    plot->legend->setVisible(true);
-    plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-    plot->legend->setMargins(QMargins(4, 2, 4, 2));
-    plot->legend->setRowSpacing(0);
-    plot->legend->setColumnSpacing(10);
-    header->addElement(0, 1, plot->legend);
-    header->setColumnStretchFactors({1.0, 0.001});
+    add_header(*plot, QString::fromUtf8(definition.title));
 
     plot->xAxis->setLabel(tr("t (s)"));
     plot->yAxis->setLabel(QString::fromUtf8(definition.y_label));

@@ -1,5 +1,6 @@
 #include "legofeup/ui/session/session.hpp"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <algorithm>
@@ -165,14 +166,28 @@ QString Session::exportTrace(const QString& path) const {
     return write_atomically(path, QByteArray::fromStdString(text.str()));
 }
 
+void Session::closeRunLog() {
+    if (!run_log_) {
+        return;
+    }
+    try {
+        run_log_->close();
+    } catch (const lessons::RunLogWriteError& error) {
+        emit problem(tr("The run log was not completed: %1").arg(error.what()));
+    }
+    run_log_.reset();
+}
+
 void Session::closeTrace() {
     trace_writer_.reset();  // the writer refers to the file: it goes first
     trace_file_.reset();
+    closeRunLog();
 }
 
 QString Session::setRecordingDirectory(const QString& directory) {
     closeTrace();
     recording_directory_.clear();
+    recording_file_.clear();
     if (directory.isEmpty()) {
         return {};
     }
@@ -196,11 +211,13 @@ void Session::openTrace() {
     if (recording_directory_.isEmpty()) {
         return;
     }
-    // A new run starts a new file; an earlier recording is kept under its own name.
+    // A new run starts new files; an earlier recording is kept under its own names.
     const QDir directory(recording_directory_);
     QString name = QStringLiteral("trace.csv");
-    for (int n = 2; directory.exists(name); ++n) {
+    QString log_name = QStringLiteral("run.log");
+    for (int n = 2; directory.exists(name) || directory.exists(log_name); ++n) {
         name = QStringLiteral("trace-%1.csv").arg(n);
+        log_name = QStringLiteral("run-%1.log").arg(n);
     }
     trace_file_ =
         std::make_unique<std::ofstream>(directory.filePath(name).toStdString(), std::ios::binary);
@@ -211,6 +228,22 @@ void Session::openTrace() {
     }
     trace_writer_ = std::make_unique<lessons::TraceCsvWriter>(*trace_file_, resolved_.loop);
     trace_file_->flush();
+
+    // The run log has the configuration the loop starts with (with an NXT's robot profile).
+    lessons::RunLogWriter::Options options;
+    options.program = "legofeup " + QCoreApplication::applicationVersion().toStdString();
+    options.link = link_.kind == LinkKind::Nxt        ? "gui, nxt"
+                   : link_.kind == LinkKind::External ? "gui, udp " + link_.address.toStdString()
+                                                      : "gui, embedded simulator";
+    const QString log_path = directory.filePath(log_name);
+    try {
+        run_log_ =
+            std::make_unique<lessons::RunLogWriter>(log_path.toStdString(), forThisRobot(resolved_),
+                                                    "LegoFeup Lab run", std::move(options));
+        recording_file_ = log_path;
+    } catch (const lessons::RunLogWriteError& error) {
+        emit problem(tr("Cannot record the run log: %1").arg(error.what()));
+    }
 }
 
 void Session::restartHistory() {
@@ -427,6 +460,16 @@ void Session::drain() {
             }
             trace_file_->flush();
         }
+        if (run_log_) {
+            try {
+                for (const RunSample& sample : batch) {
+                    run_log_->on_step(sample.snapshot, truth_or_unknown(sample));
+                }
+            } catch (const lessons::RunLogWriteError& error) {
+                run_log_.reset();  // a recording that fails says so once, then stops
+                emit problem(tr("The run log stopped: %1").arg(error.what()));
+            }
+        }
         const int first = static_cast<int>(history_.samples().size());
         const int count = static_cast<int>(batch.size());
         history_.append(std::move(batch));
@@ -435,6 +478,9 @@ void Session::drain() {
     status_ = status;
     if (status.phase != phase_) {
         phase_ = status.phase;
+        if (!running()) {
+            closeRunLog();  // the run is over: its log gets its end line
+        }
         if (phase_ == RunPhase::Failed) {
             emit problem(tr("The link failed: %1").arg(QString::fromStdString(status.message)));
         }

@@ -20,11 +20,13 @@
 #include "legofeup/ui/arena/arena_view.hpp"
 #include "legofeup/ui/calibration/ir_calibration_dialog.hpp"
 #include "legofeup/ui/calibration/umbmark_dialog.hpp"
+#include "legofeup/ui/lesson/lesson_actions.hpp"
+#include "legofeup/ui/lesson/lesson_panel.hpp"
 #include "legofeup/ui/panels/config_panel.hpp"
 #include "legofeup/ui/panels/covariance_view.hpp"
-#include "legofeup/ui/panels/experiment_panel.hpp"
 #include "legofeup/ui/panels/robot_status.hpp"
 #include "legofeup/ui/plots/plots_panel.hpp"
+#include "legofeup/ui/refilter/refilter_dialog.hpp"
 #include "legofeup/ui/session/session.hpp"
 #include "legofeup/ui/window/app_settings.hpp"
 #include "legofeup/ui/window/appearance.hpp"
@@ -88,7 +90,7 @@ void MainWindow::buildDocks() {
     setCentralWidget(arena_);
     plots_ = new PlotsPanel(session_.history(), this);
     config_ = new ConfigPanel(session_, this);
-    experiment_ = new ExperimentPanel(session_, this);
+    lesson_ = new LessonPanel(session_, this);
     covariance_ = new CovarianceView(session_.history(), this);
     robot_ = new RobotStatusView(session_, this);
     arena_->setEllipseConfidence(
@@ -98,8 +100,7 @@ void MainWindow::buildDocks() {
     toolbar_ = new RunToolBar(session_, this);
     addToolBar(Qt::TopToolBarArea, toolbar_);
 
-    dock(this, tr("Experiment"), QStringLiteral("experimentDock"), experiment_,
-         Qt::LeftDockWidgetArea);
+    dock(this, tr("Lesson"), QStringLiteral("lessonDock"), lesson_, Qt::LeftDockWidgetArea);
     dock(this, tr("Covariance P"), QStringLiteral("covarianceDock"), covariance_,
          Qt::LeftDockWidgetArea);
     dock(this, tr("Configuration"), QStringLiteral("configDock"), config_, Qt::RightDockWidgetArea);
@@ -140,8 +141,12 @@ void MainWindow::buildDocks() {
     keyboard_ = new KeyboardDriver(session_, this);
     qApp->installEventFilter(keyboard_);
     files_ = new FileActions(session_, *plots_, this);
-    connect(files_, &FileActions::done, this,
-            [this](const QString& note) { statusBar()->showMessage(note, 10000); });
+    lesson_files_ = new LessonActions(*lesson_, this);
+    const auto show_note = [this](const QString& note) { statusBar()->showMessage(note, 10000); };
+    connect(files_, &FileActions::done, this, show_note);
+    connect(lesson_files_, &LessonActions::done, this, show_note);
+    connect(lesson_, &LessonPanel::note, this, show_note);
+    connect(lesson_, &LessonPanel::openLessonRequested, lesson_files_, &LessonActions::openLesson);
 
     robot_line_ = new QLabel(this);
     robot_line_->setObjectName(QStringLiteral("robotLine"));
@@ -165,15 +170,27 @@ void MainWindow::buildMenus() {
     file->addAction(tr("&Save configuration…"), QKeySequence::Save, files_,
                     &FileActions::saveConfig);
     file->addSeparator();
+    file->addAction(tr("Open &lesson…"), lesson_files_, &LessonActions::openLesson);
+    file->addAction(tr("Open a&nswers…"), lesson_files_, &LessonActions::openAnswers);
+    file->addAction(tr("Save &answers…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
+                    lesson_files_, &LessonActions::saveAnswers);
+    file->addAction(tr("&Export report…"), QKeySequence(Qt::CTRL | Qt::Key_E), lesson_files_,
+                    &LessonActions::exportReport);
+    file->addSeparator();
     QAction* record = file->addAction(tr("&Record runs…"));
+    record->setToolTip(
+        tr("Records every run into a folder: trace.csv and run.log, the run log "
+           "File ▸ Re-filter replays"));
     record->setCheckable(true);
     connect(record, &QAction::toggled, files_, &FileActions::setRecording);
+    connect(files_, &FileActions::recordingChanged, this, &MainWindow::updateStatus);
     connect(files_, &FileActions::recordingChanged, record, [record](bool on) {
         const QSignalBlocker blocker(record);
         record->setChecked(on);
     });
     file->addAction(tr("Export &plots…"), files_, &FileActions::exportPlots);
     file->addAction(tr("Export &trace (CSV)…"), files_, &FileActions::exportTrace);
+    file->addAction(tr("Re-&filter recorded run…"), this, &MainWindow::openRefilter);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -324,6 +341,10 @@ UmbmarkDialog* MainWindow::openUmbmark() {
     return open_one<UmbmarkDialog>(*this, session_);
 }
 
+RefilterDialog* MainWindow::openRefilter() {
+    return open_one<RefilterDialog>(*this, session_);
+}
+
 void MainWindow::updateStatus() {
     const LiveRunStatus& status = session_.status();
     const QString robot = robot_status_line(session_.phase(), status);
@@ -341,7 +362,8 @@ void MainWindow::updateStatus() {
         text += tr(" · keyboard driving");
     }
     if (!session_.recordingDirectory().isEmpty()) {
-        text += tr(" · ● recording");
+        const QString file = QFileInfo(session_.recordingFile()).fileName();
+        text += file.isEmpty() ? tr(" · ● recording") : tr(" · ● recording %1").arg(file);
     }
     status_->setText(text);
     if (frames_->isVisible()) {
@@ -357,10 +379,16 @@ void MainWindow::restorePreferences() {
         resizeDocks({findChild<QDockWidget*>(QStringLiteral("plotsDock"))},
                     {static_cast<int>(screen.height() * 0.36)}, Qt::Vertical);
         resizeDocks(
-            {findChild<QDockWidget*>(QStringLiteral("experimentDock")),
+            {findChild<QDockWidget*>(QStringLiteral("lessonDock")),
              findChild<QDockWidget*>(QStringLiteral("configDock"))},
-            {static_cast<int>(screen.width() * 0.2), static_cast<int>(screen.width() * 0.24)},
+            {static_cast<int>(screen.width() * 0.24), static_cast<int>(screen.width() * 0.22)},
             Qt::Horizontal);
+        // The lesson's step and questions get most of the left column; P needs a few lines.
+        resizeDocks(
+            {findChild<QDockWidget*>(QStringLiteral("lessonDock")),
+             findChild<QDockWidget*>(QStringLiteral("covarianceDock"))},
+            {static_cast<int>(screen.height() * 0.7), static_cast<int>(screen.height() * 0.2)},
+            Qt::Vertical);
     }
     restoreState(preferences::kWindowState.read());
     frame_times_->setChecked(preferences::kShowFrameTimes.read());
@@ -376,7 +404,8 @@ void MainWindow::savePreferences() const {
     preferences::kPlotWindow.write(plots_->timeWindow());
     preferences::kShowFrameTimes.write(frame_times_->isChecked());
     save_link_choice(session_.linkChoice());
-    preferences::kExperiment.write(experiment_->currentExperiment());
+    preferences::kExperiment.write(lesson_->currentStep());
+    lesson_->saveAnswersNow();
     QDir().mkpath(QFileInfo(last_config_path()).path());
     session_.saveConfig(last_config_path());
 }

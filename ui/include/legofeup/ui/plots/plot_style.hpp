@@ -5,6 +5,7 @@
 #include <QColor>
 #include <QFont>
 #include <QPalette>
+#include <QString>
 #include <array>
 
 #include "legofeup/ui/plots/plot_series.hpp"
@@ -37,6 +38,10 @@ PlotLook plot_look(const QPalette& palette, const QFont& base, double text_scale
 
 /// Background, axes, grid, title, legend and the plot's reference lines and their labels.
 void apply_look(QCustomPlot& plot, const PlotLook& look);
+
+/// A header row above the axes: `title` on the left, the legend (shown, in one row) on the
+/// right.
+void add_header(QCustomPlot& plot, const QString& title);
 
 /// Wraps the legend (beside the title) into as few rows as fit a plot `width` px wide.
 void fit_legend(QCustomPlot& plot, int width);

@@ -22,6 +22,7 @@
 
 #include "legofeup/lessons/config_schema.hpp"
 #include "legofeup/lessons/nxt_run.hpp"
+#include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/run_config.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
@@ -90,11 +91,15 @@ class Session : public QObject {
     QStringList loadConfig(const QString& path);
     /// Writes the whole history as trace.csv (the CLI's format). Returns an error or "".
     QString exportTrace(const QString& path) const;
-    /// Records the coming run(s) into `directory`: config.toml now, trace.csv as it runs
-    /// (flushed every frame, so a crash keeps what was recorded). "" to stop recording.
+    /// Records the coming run(s) into `directory`: config.toml now; as each run goes,
+    /// trace.csv (flushed every frame) and run.log, the run log `legofeup-cli refilter` and
+    /// File ▸ Re-filter replay (lessons/recording; flushed every half second). A later run
+    /// writes trace-2.csv and run-2.log, never over an earlier one. "" to stop recording.
     /// Returns an error or "".
     QString setRecordingDirectory(const QString& directory);
     const QString& recordingDirectory() const { return recording_directory_; }
+    /// The run log being written (or last written while recording); empty if none.
+    const QString& recordingFile() const { return recording_file_; }
 
   public slots:
     /// Starts a new run (from a clean history), or resumes a paused one. After a failed run
@@ -136,6 +141,8 @@ class Session : public QObject {
     lessons::ResolvedRun forThisRobot(lessons::ResolvedRun run) const;
     void openTrace();
     void closeTrace();
+    /// Writes the run log's end line (the run is over); keeps the trace open for the rest.
+    void closeRunLog();
 
     lessons::RunConfig config_;
     lessons::ResolvedRun resolved_;
@@ -158,6 +165,8 @@ class Session : public QObject {
     QString recording_directory_;
     std::unique_ptr<std::ofstream> trace_file_;
     std::unique_ptr<lessons::TraceCsvWriter> trace_writer_;
+    std::unique_ptr<lessons::RunLogWriter> run_log_;
+    QString recording_file_;
 };
 
 /// Whether a setting takes effect while the robot runs (else at the next start or reset).

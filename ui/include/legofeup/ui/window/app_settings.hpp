@@ -50,7 +50,12 @@ inline const Preference<QString> kNxtProfile{"nxt/profile", {}};
 inline const Preference<bool> kNxtEmulated{"nxt/emulated", false};
 /// The bricks connected to, most recent first (remember_robot() keeps the list).
 inline const Preference<QStringList> kRecentRobots{"nxt/recent", {}};
+/// The lesson step shown last ("a" … "f" in the built-in lesson).
 inline const Preference<QString> kExperiment{"lesson/experiment", QStringLiteral("f")};
+/// The teacher's lesson file in use; empty: the built-in LegoFeup lesson.
+inline const Preference<QString> kLessonFile{"lesson/file", {}};
+/// The folder the lesson's files (answers, reports, run logs) were last saved in or read from.
+inline const Preference<QString> kLessonFolder{"lesson/folder", {}};
 
 }  // namespace preferences
 

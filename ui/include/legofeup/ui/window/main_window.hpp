@@ -1,5 +1,5 @@
 #pragma once
-// The LegoFeup Lab window: the arena in the middle, the plots below, the experiment and the
+// The LegoFeup Lab window: the arena in the middle, the plots below, the lesson and the
 // covariance matrix on the left, the configuration on the right. It builds the docks and
 // menus and wires signals — nothing else: the session owns the run, each widget its job.
 
@@ -18,8 +18,10 @@ class IrCalibrationDialog;
 class RobotStatusView;
 class UmbmarkDialog;
 class CovarianceView;
-class ExperimentPanel;
 class FileActions;
+class LessonActions;
+class LessonPanel;
+class RefilterDialog;
 class KeyboardDriver;
 class PlotsPanel;
 class RunToolBar;
@@ -35,7 +37,8 @@ class MainWindow : public QMainWindow {
     ArenaView& arena() const { return *arena_; }
     PlotsPanel& plots() const { return *plots_; }
     ConfigPanel& configPanel() const { return *config_; }
-    ExperimentPanel& experimentPanel() const { return *experiment_; }
+    LessonPanel& lessonPanel() const { return *lesson_; }
+    LessonActions& lessonActions() const { return *lesson_files_; }
     CovarianceView& covarianceView() const { return *covariance_; }
     RunToolBar& runToolBar() const { return *toolbar_; }
     KeyboardDriver& keyboard() const { return *keyboard_; }
@@ -56,6 +59,8 @@ class MainWindow : public QMainWindow {
     /// one at a time) and returns it.
     IrCalibrationDialog* openIrCalibration();
     UmbmarkDialog* openUmbmark();
+    /// File ▸ Re-filter recorded run…: opens the dialog (not blocking; one at a time).
+    RefilterDialog* openRefilter();
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -72,7 +77,8 @@ class MainWindow : public QMainWindow {
     ArenaView* arena_ = nullptr;
     PlotsPanel* plots_ = nullptr;
     ConfigPanel* config_ = nullptr;
-    ExperimentPanel* experiment_ = nullptr;
+    LessonPanel* lesson_ = nullptr;
+    LessonActions* lesson_files_ = nullptr;
     CovarianceView* covariance_ = nullptr;
     RunToolBar* toolbar_ = nullptr;
     KeyboardDriver* keyboard_ = nullptr;
