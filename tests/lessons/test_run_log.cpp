@@ -5,6 +5,7 @@
 // its clock.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -26,8 +27,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Per process: ctest runs each test in its own process, in parallel, and several of them
+// record short.log.
 fs::path temp_file(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / "legofeup_run_log_tests";
+    const fs::path dir =
+        fs::temp_directory_path() / ("legofeup_run_log_tests_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     return dir / name;
 }
