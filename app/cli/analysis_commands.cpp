@@ -145,16 +145,6 @@ void write_shard(const AnalysisOptions& options, const BatchHeader& header, cons
     }
 }
 
-bool make_directory(const fs::path& out) {
-    std::error_code error;
-    fs::create_directories(out, error);
-    if (error) {
-        std::cerr << "error: cannot create " << out.string() << ": " << error.message() << '\n';
-        return false;
-    }
-    return true;
-}
-
 int montecarlo_command(const AnalysisOptions& options) {
     MonteCarloSpec spec;
     BatchHeader header;
@@ -171,7 +161,7 @@ int montecarlo_command(const AnalysisOptions& options) {
         return kExitBadInput;
     }
     const fs::path out(options.out);
-    if (!make_directory(out)) {
+    if (!create_output_directory(out)) {
         return kExitOutputFailed;
     }
     BatchClock clock("montecarlo");
@@ -212,7 +202,7 @@ int sweep_command(const AnalysisOptions& options) {
         return kExitBadInput;
     }
     const fs::path out(options.out);
-    if (!make_directory(out)) {
+    if (!create_output_directory(out)) {
         return kExitOutputFailed;
     }
     BatchClock clock("sweep");
@@ -255,7 +245,7 @@ int merge_command(const AnalysisOptions& options) {
         return kExitBadInput;
     }
     const fs::path out(options.out);
-    if (!make_directory(out)) {
+    if (!create_output_directory(out)) {
         return kExitOutputFailed;
     }
     if (merged.header.kind == "montecarlo") {

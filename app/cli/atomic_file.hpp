@@ -1,10 +1,12 @@
 #pragma once
-// An output file that appears whole or not at all: written to `<path>.partial`, renamed over
+// Output files and folders. An output file appears whole or not at all: written to
+// `<path>.partial`, renamed over
 // `<path>` on commit(). A failed or abandoned write never leaves a half file behind, and an
 // existing file of the same name stays intact until the new one is complete.
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <stdexcept>
 #include <utility>
 
@@ -44,5 +46,18 @@ class AtomicFile {
     std::ofstream out_;
     bool committed_ = false;
 };
+
+/// Creates an output directory (and its parents). On failure says why on stderr and returns
+/// false: the caller exits with kExitOutputFailed.
+inline bool create_output_directory(const std::filesystem::path& directory) {
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error) {
+        std::cerr << "error: cannot create " << directory.string() << ": " << error.message()
+                  << '\n';
+        return false;
+    }
+    return true;
+}
 
 }  // namespace legofeup::cli

@@ -225,10 +225,7 @@ int run_command(const RunOptions& options) {
     }
 
     const fs::path out(options.out_directory);
-    std::error_code error;
-    fs::create_directories(out, error);
-    if (error) {
-        std::cerr << "error: cannot create " << out.string() << ": " << error.message() << '\n';
+    if (!create_output_directory(out)) {
         return kExitOutputFailed;
     }
     try {

@@ -90,7 +90,7 @@ report::StudentReport build_report(const ReportOptions& options) {
             if (options.seed) {
                 config.seed = *options.seed;
             }
-            outcome = report::run_step(report.lesson, step, config);
+            outcome = report::run_step(step, config);
             if (!options.quiet) {
                 print_step(step, outcome);
             }

@@ -38,8 +38,8 @@ struct Spread {
 };
 
 /// A run's metrics without the machine-dependent ones (wall time, real-time factor).
-nlohmann::json deterministic_metrics(const ResolvedRun& run, const RunResult& result) {
-    nlohmann::json metrics = run_summary(run, result, "", "")["metrics"];
+nlohmann::json deterministic_metrics(const RunResult& result) {
+    nlohmann::json metrics = result_metrics_to_json(result);
     for (auto it = metrics.begin(); it != metrics.end();) {
         it = is_machine_dependent_metric(it.key()) ? metrics.erase(it) : std::next(it);
     }
@@ -57,10 +57,6 @@ std::optional<double> as_number(const nlohmann::json& value) {
 }
 
 }  // namespace
-
-bool is_machine_dependent_metric(const std::string& name) {
-    return name == "wall_time_s" || name == "real_time_factor";
-}
 
 std::vector<std::uint64_t> grading_seeds(const GradingSpec& spec, const GradingRequest& request) {
     const int count = request.seeds > 0 ? request.seeds : spec.seeds;
@@ -97,7 +93,7 @@ nlohmann::json grade_submission(const Lesson& lesson, const Submission& submissi
     nlohmann::json per_seed = nlohmann::json::array();
     std::map<std::string, Spread> spreads;  // ordered by name: the JSON is reproducible
     for (std::size_t i = 0; i < runs.size(); ++i) {
-        nlohmann::json metrics = deterministic_metrics(runs[i], results[i]);
+        nlohmann::json metrics = deterministic_metrics(results[i]);
         for (const auto& [name, value] : metrics.items()) {
             if (const auto number = as_number(value)) {
                 spreads[name].add(*number);

@@ -72,6 +72,10 @@ nlohmann::json result_metrics_to_json(const RunResult& result) {
     return metrics;
 }
 
+bool is_machine_dependent_metric(std::string_view name) {
+    return name == "wall_time_s" || name == "real_time_factor";
+}
+
 nlohmann::json run_summary(const ResolvedRun& run, const RunResult& result,
                            std::string_view experiment, std::string_view title) {
     nlohmann::json walls = nlohmann::json::array();

@@ -130,12 +130,7 @@ std::vector<std::string> write_refilter_plots(const lessons::RefilterResult& res
                                               const sim::WorldSpec& world,
                                               const std::filesystem::path& directory,
                                               const std::string& title) {
-    std::vector<std::string> names;
-    for (const RunFigure& figure : refilter_figures(result, world, title)) {
-        figure.figure.write((directory / figure.name).string());
-        names.push_back(figure.name);
-    }
-    return names;
+    return write_figures(refilter_figures(result, world, title), directory);
 }
 
 }  // namespace legofeup::report

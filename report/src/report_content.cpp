@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "legofeup/lessons/config_schema.hpp"
+#include "legofeup/lessons/run_summary.hpp"
 
 namespace legofeup::report::content {
 namespace {
@@ -14,9 +15,6 @@ namespace {
 constexpr std::array<std::string_view, 8> kAlwaysShown{
     "seed",       "filter.q11",    "filter.q22",    "filter.r11",
     "filter.r22", "initial.var_x", "initial.var_y", "initial.var_theta"};
-
-// Metrics that measure the machine, not the run.
-constexpr std::array<std::string_view, 2> kMachineDependent{"wall_time_s", "real_time_factor"};
 
 std::string format_json(const nlohmann::json& value) {
     if (value.is_boolean()) {
@@ -75,8 +73,7 @@ std::vector<MetricRow> metric_rows(const nlohmann::json& metrics) {
         return rows;
     }
     for (const auto& [name, value] : metrics.items()) {
-        if (std::find(kMachineDependent.begin(), kMachineDependent.end(), name)
-            == kMachineDependent.end()) {
+        if (!lessons::is_machine_dependent_metric(name)) {
             rows.push_back({name, format_json(value)});
         }
     }

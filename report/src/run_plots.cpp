@@ -221,8 +221,13 @@ std::vector<RunFigure> run_figures(const RunRecording& recording, const sim::Wor
 std::vector<std::string> write_run_plots(const RunRecording& recording, const sim::WorldSpec& world,
                                          const std::filesystem::path& directory,
                                          const std::string& title) {
+    return write_figures(run_figures(recording, world, title), directory);
+}
+
+std::vector<std::string> write_figures(const std::vector<RunFigure>& figures,
+                                       const std::filesystem::path& directory) {
     std::vector<std::string> names;
-    for (const RunFigure& figure : run_figures(recording, world, title)) {
+    for (const RunFigure& figure : figures) {
         figure.figure.write((directory / figure.name).string());
         names.push_back(figure.name);
     }

@@ -7,8 +7,7 @@
 
 namespace legofeup::report {
 
-StepOutcome run_step(const lessons::Lesson& lesson, const lessons::LessonStep& step,
-                     const lessons::RunConfig& config) {
+StepOutcome run_step(const lessons::LessonStep& step, const lessons::RunConfig& config) {
     const lessons::ResolvedRun run = lessons::resolve(config);
     StepOutcome outcome;
     outcome.step_id = step.id;
@@ -16,8 +15,7 @@ StepOutcome run_step(const lessons::Lesson& lesson, const lessons::LessonStep& s
     outcome.config = run.config;
     outcome.world = run.world;
     const lessons::RunResult result = lessons::run_lockstep(run, &outcome.recording);
-    outcome.metrics =
-        lessons::run_summary(run, result, step.id, lesson.title + " — " + step.title)["metrics"];
+    outcome.metrics = lessons::result_metrics_to_json(result);
     outcome.checks = lessons::evaluate_checks(step.checks, outcome.metrics);
     return outcome;
 }

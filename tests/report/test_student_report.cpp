@@ -63,7 +63,7 @@ const StudentReport& sample_report() {
         r.lesson = make_lesson();
         r.students = "Ana <Silva> & Rui";
         r.created = "2024-05-01 10:00";
-        StepOutcome a = run_step(r.lesson, r.lesson.steps[0], r.lesson.steps[0].config);
+        StepOutcome a = run_step(r.lesson.steps[0], r.lesson.steps[0].config);
         a.answers["q1"] = "Because <script>alert(1)</script> the *wheels* differ.";
         StepOutcome b;
         b.step_id = "b";

@@ -206,7 +206,7 @@ class LessonPanelTest : public QObject {
                  total);
 
         // The numbers are the CLI's: the same lockstep run of the configuration as run.
-        const report::StepOutcome cli = report::run_step(lesson, step, session_->config());
+        const report::StepOutcome cli = report::run_step(step, session_->config());
         nlohmann::json gui_metrics = outcome->metrics;
         nlohmann::json cli_metrics = cli.metrics;
         for (const auto& [name, value] : cli.metrics.items()) {

@@ -77,7 +77,7 @@ void StepRunTracker::check(const lessons::LessonStep& step) {
         QtConcurrent::run([lesson = lesson_, step, config = session_.config()]() -> Computed {
             Computed result{lesson, {}, {}};
             try {
-                result.outcome = report::run_step(*lesson, step, config);
+                result.outcome = report::run_step(step, config);
             } catch (const std::exception& error) {
                 result.error = QString::fromUtf8(error.what());
             }

@@ -13,6 +13,7 @@
 
 #include "legofeup/lessons/analysis/batch_run.hpp"
 #include "legofeup/lessons/lesson.hpp"
+#include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/lessons/submission.hpp"
 
 namespace legofeup::lessons {
@@ -26,9 +27,6 @@ struct GradingRequest {
 
 /// The seeds a grading run uses: first_seed, first_seed + 1, … (request over lesson).
 std::vector<std::uint64_t> grading_seeds(const GradingSpec& spec, const GradingRequest& request);
-
-/// The metrics that depend on the machine, not on the run (left out of grading results).
-bool is_machine_dependent_metric(const std::string& name);
 
 /// Grades one submission. The JSON has: lesson, step, submission, students, seeds, per_seed
 /// (seed and metrics), aggregate (per metric: mean, std, min, max), checks (evaluated on the

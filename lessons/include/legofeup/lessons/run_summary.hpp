@@ -18,6 +18,10 @@ nlohmann::json metrics_to_json(const RunMetrics& metrics);
 /// went (routine_finished, frames_missing, wall time, …). Lesson checks name its keys.
 nlohmann::json result_metrics_to_json(const RunResult& result);
 
+/// The metrics of that object that measure the machine, not the run (wall time, real-time
+/// factor): left out wherever results must be reproducible (grading, reports).
+bool is_machine_dependent_metric(std::string_view name);
+
 nlohmann::json run_summary(const ResolvedRun& run, const RunResult& result,
                            std::string_view experiment, std::string_view title);
 

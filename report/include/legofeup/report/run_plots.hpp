@@ -52,6 +52,11 @@ struct RunFigure {
 std::vector<RunFigure> run_figures(const RunRecording& recording, const sim::WorldSpec& world,
                                    const std::string& title, int width = 1200);
 
+/// Writes each figure as `<directory>/<name>.png` and `.svg`, returning the names written.
+/// Throws std::runtime_error naming the file that failed.
+std::vector<std::string> write_figures(const std::vector<RunFigure>& figures,
+                                       const std::filesystem::path& directory);
+
 /// Writes trajectory, errors, covariance, ir_distances and wheel_speeds (.png and .svg) into
 /// `directory`, returning the base names written.
 std::vector<std::string> write_run_plots(const RunRecording& recording, const sim::WorldSpec& world,

@@ -36,10 +36,9 @@ struct StudentReport {
     std::vector<StepOutcome> steps;  ///< in lesson order
 };
 
-/// Runs one step of `lesson` in lockstep (its preset, or `config` when given) and fills the
-/// outcome: metrics, checks, recording, world. The answers are left empty.
-StepOutcome run_step(const lessons::Lesson& lesson, const lessons::LessonStep& step,
-                     const lessons::RunConfig& config);
+/// Runs `step` in lockstep with `config` (the step's preset, or a student's tuning of it) and
+/// fills the outcome: metrics, checks, recording, world. The answers are left empty.
+StepOutcome run_step(const lessons::LessonStep& step, const lessons::RunConfig& config);
 
 /// The report as one self-contained HTML document (plots as inline SVG).
 std::string report_html(const StudentReport& report);
