@@ -120,6 +120,11 @@ struct ChecksOnRun {
     const char* run;
 };
 
+// Names the case in test listings ("b's checks on a's run") instead of dumping its bytes.
+void PrintTo(const ChecksOnRun& pair, std::ostream* out) {
+    *out << pair.checks << "'s checks on " << pair.run << "'s run";
+}
+
 class StepChecksDiscriminate : public ::testing::TestWithParam<ChecksOnRun> {};
 
 TEST_P(StepChecksDiscriminate, FailOnTheRunOfAnotherStep) {
