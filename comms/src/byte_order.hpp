@@ -19,6 +19,9 @@ class ByteWriter {
     void u16(std::size_t offset, std::uint16_t value) { unsigned_le(offset, value, 2); }
     void u32(std::size_t offset, std::uint32_t value) { unsigned_le(offset, value, 4); }
     void u64(std::size_t offset, std::uint64_t value) { unsigned_le(offset, value, 8); }
+    void i16(std::size_t offset, std::int16_t value) {
+        u16(offset, std::bit_cast<std::uint16_t>(value));
+    }
     void i32(std::size_t offset, std::int32_t value) {
         u32(offset, std::bit_cast<std::uint32_t>(value));
     }
@@ -54,6 +57,7 @@ class ByteReader {
         return static_cast<std::uint32_t>(unsigned_le(offset, 4));
     }
     std::uint64_t u64(std::size_t offset) const { return unsigned_le(offset, 8); }
+    std::int16_t i16(std::size_t offset) const { return std::bit_cast<std::int16_t>(u16(offset)); }
     std::int32_t i32(std::size_t offset) const { return std::bit_cast<std::int32_t>(u32(offset)); }
     double f64(std::size_t offset) const { return std::bit_cast<double>(u64(offset)); }
     /// The bytes up to the first NUL within `size`.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <string>
 
 #include "byte_order.hpp"
 
@@ -27,6 +28,24 @@ constexpr std::uint16_t kRearValidBit = 1U << 1;
 constexpr std::uint16_t kWatchdogBit = 1U << 2;
 constexpr std::uint16_t kPausedBit = 1U << 3;
 constexpr std::uint16_t kResetBit = 1U << 4;
+
+// Sensor frame extension: which optional sensors the frame carries (offset 36).
+constexpr std::uint8_t kGyroBit = 1U << 0;
+constexpr std::uint8_t kAccelerometersBit = 1U << 1;
+constexpr std::uint8_t kCompassBit = 1U << 2;
+constexpr std::uint8_t kBeaconScanBit = 1U << 3;
+// Its fields: 37 u8 beacon count, 38 i16 gyro, 40 4×i16 accelerometers ([unit][axis] in the
+// order of SensorFrame::accel_raw), 48 i16 compass, 50 u16 reserved, 52 the sightings.
+constexpr std::size_t kBeaconCountOffset = 37;
+constexpr std::size_t kGyroOffset = 38;
+constexpr std::size_t kAccelOffset = 40;
+constexpr std::size_t kCompassOffset = 48;
+constexpr auto kMaxSightings = static_cast<std::size_t>(kMaxBeaconSightings);
+static_assert(kFrameSightingsOffset + kMaxSightings * kFrameSightingSize <= kMaxPacketSize);
+
+std::size_t extended_frame_size(std::size_t sightings) {
+    return kFrameSightingsOffset + kFrameSightingSize * sightings;
+}
 
 // Control request flag bits.
 constexpr std::uint8_t kPoseGivenBit = 1U << 0;
@@ -54,8 +73,7 @@ constexpr std::array kCounterFields = {
 static_assert(kCountersOffset + 8 * kCounterFields.size() == kMessageOffset);
 static_assert(kMessageOffset + kMessageSize == kControlReplySize);
 
-ByteWriter start_packet(PacketType type, std::uint32_t sequence, double time) {
-    const std::size_t size = packet_size(type);
+ByteWriter start_packet(PacketType type, std::uint32_t sequence, double time, std::size_t size) {
     ByteWriter out(size);
     for (std::size_t i = 0; i < kMagic.size(); ++i) {
         out.u8(i, kMagic[i]);
@@ -66,6 +84,10 @@ ByteWriter start_packet(PacketType type, std::uint32_t sequence, double time) {
     out.u32(8, sequence);
     out.u64(12, to_microseconds(time));
     return out;
+}
+
+ByteWriter start_packet(PacketType type, std::uint32_t sequence, double time) {
+    return start_packet(type, sequence, time, packet_size(type));
 }
 
 /// The header must decode and carry one of `accepted` types.
@@ -141,6 +163,28 @@ std::size_t packet_size(PacketType type) {
             return kControlReplySize;
     }
     return 0;
+}
+
+std::size_t frame_size(const SensorFrame& frame) {
+    if (!frame.has_gyro && !frame.has_accelerometers && !frame.has_compass
+        && !frame.has_beacon_scan) {
+        return kFrameSize;
+    }
+    return extended_frame_size(
+        frame.has_beacon_scan ? std::min<std::size_t>(frame.beacons.count, kMaxSightings) : 0);
+}
+
+bool is_valid_length(PacketType type, std::size_t length) {
+    const std::size_t size = packet_size(type);
+    if (size == 0) {
+        return false;
+    }
+    if (length == size) {
+        return true;
+    }
+    return type == PacketType::SensorFrame && length >= kFrameSightingsOffset
+           && length <= extended_frame_size(kMaxSightings)
+           && (length - kFrameSightingsOffset) % kFrameSightingSize == 0;
 }
 
 std::string_view to_string(PacketType type) {
@@ -296,7 +340,7 @@ DecodeError decode_header(std::span<const std::uint8_t> datagram, PacketHeader& 
         return DecodeError::UnknownType;
     }
     const std::size_t length = in.u16(6);
-    if (length != expected) {
+    if (!is_valid_length(type, length)) {
         return DecodeError::BadLength;
     }
     if (datagram.size() < length) {
@@ -310,11 +354,16 @@ DecodeError decode_header(std::span<const std::uint8_t> datagram, PacketHeader& 
 }
 
 // --- Sensor frame: 20 i32 encoder right, 24 i32 encoder left, 28 u16 IR front A/D,
-//     30 u16 IR rear A/D, 32 u16 flags, 34 u16 reserved.
+//     30 u16 IR rear A/D, 32 u16 flags, 34 u16 reserved; then, only when the frame has any
+//     optional sensor, the extension block: 36 u8 extras flags, 37 u8 beacon count n,
+//     38 i16 gyro, 40 i16 accel right forward, 42 right left, 44 left forward, 46 left left,
+//     48 i16 compass degrees, 50 u16 reserved, 52 + 9k u8 sighting k id, 53 + 9k f64 bearing.
+//     Fields of absent sensors are sent as 0 and decoded as 0.
 
 Bytes encode(const FramePacket& packet) {
     const SensorFrame& frame = packet.frame;
-    ByteWriter out = start_packet(PacketType::SensorFrame, frame.sequence, frame.time);
+    const std::size_t size = frame_size(frame);
+    ByteWriter out = start_packet(PacketType::SensorFrame, frame.sequence, frame.time, size);
     out.i32(20, frame.encoder_counts[0]);
     out.i32(24, frame.encoder_counts[1]);
     out.u16(28, frame.ir_adc[0]);
@@ -325,26 +374,134 @@ Bytes encode(const FramePacket& packet) {
         | bit(packet.flags.watchdog_stopped, kWatchdogBit) | bit(packet.flags.paused, kPausedBit)
         | bit(packet.flags.reset, kResetBit));
     out.u16(32, flags);
+    if (size == kFrameSize) {
+        return out.take();  // the plain frame, byte for byte as before the extension existed
+    }
+    const auto extra = [](bool set, std::uint8_t mask) { return set ? mask : std::uint8_t{0}; };
+    out.u8(kFrameExtensionOffset,
+           static_cast<std::uint8_t>(extra(frame.has_gyro, kGyroBit)
+                                     | extra(frame.has_accelerometers, kAccelerometersBit)
+                                     | extra(frame.has_compass, kCompassBit)
+                                     | extra(frame.has_beacon_scan, kBeaconScanBit)));
+    if (frame.has_gyro) {
+        out.i16(kGyroOffset, frame.gyro_raw);
+    }
+    if (frame.has_accelerometers) {
+        for (std::size_t unit = 0; unit < 2; ++unit) {
+            for (std::size_t axis = 0; axis < 2; ++axis) {
+                out.i16(kAccelOffset + 4 * unit + 2 * axis, frame.accel_raw[unit][axis]);
+            }
+        }
+    }
+    if (frame.has_compass) {
+        out.i16(kCompassOffset, frame.compass_deg);
+    }
+    const std::size_t sightings = (size - kFrameSightingsOffset) / kFrameSightingSize;
+    out.u8(kBeaconCountOffset, static_cast<std::uint8_t>(sightings));
+    for (std::size_t k = 0; k < sightings; ++k) {
+        const BeaconSighting& sighting = frame.beacons.sightings[k];
+        out.u8(kFrameSightingsOffset + kFrameSightingSize * k, sighting.id);
+        out.f64(kFrameSightingsOffset + kFrameSightingSize * k + 1, sighting.bearing);
+    }
     return out.take();
 }
 
-DecodeError decode(std::span<const std::uint8_t> datagram, FramePacket& packet) {
+namespace {
+
+/// The extension block of a frame whose header (and so its length, one of 52 + 9n) was
+/// checked already. Fills the optional sensors of `frame` or says what was wrong.
+DecodeError decode_frame_extension(const ByteReader& in, std::size_t length, SensorFrame& frame,
+                                   std::string& reason) {
+    const std::uint8_t extras = in.u8(kFrameExtensionOffset);  // bits 4–7 reserved: ignored
+    const std::size_t count = in.u8(kBeaconCountOffset);
+    frame.has_beacon_scan = (extras & kBeaconScanBit) != 0;
+    if ((extras & (kGyroBit | kAccelerometersBit | kCompassBit | kBeaconScanBit)) == 0) {
+        // A frame without optional sensors is the plain 36 bytes: one encoding per frame.
+        reason = "extension block without any sensor flag (bits 0-3 of offset 36 all clear)";
+        return DecodeError::BadLength;
+    }
+    if (count > kMaxSightings) {
+        reason =
+            "beacon count " + std::to_string(count) + " exceeds " + std::to_string(kMaxSightings);
+        return DecodeError::BadLength;
+    }
+    if (count != 0 && !frame.has_beacon_scan) {
+        reason = "beacon count " + std::to_string(count) + " without the beacon-scan flag (bit 3)";
+        return DecodeError::BadLength;
+    }
+    if (extended_frame_size(count) != length) {
+        reason = "beacon count " + std::to_string(count) + " needs length "
+                 + std::to_string(extended_frame_size(count)) + ", the length field says "
+                 + std::to_string(length);
+        return DecodeError::BadLength;
+    }
+    frame.has_gyro = (extras & kGyroBit) != 0;
+    frame.gyro_raw = frame.has_gyro ? in.i16(kGyroOffset) : std::int16_t{0};
+    frame.has_accelerometers = (extras & kAccelerometersBit) != 0;
+    for (std::size_t unit = 0; unit < 2; ++unit) {
+        for (std::size_t axis = 0; axis < 2; ++axis) {
+            frame.accel_raw[unit][axis] = frame.has_accelerometers
+                                              ? in.i16(kAccelOffset + 4 * unit + 2 * axis)
+                                              : std::int16_t{0};
+        }
+    }
+    frame.has_compass = (extras & kCompassBit) != 0;
+    frame.compass_deg = frame.has_compass ? in.i16(kCompassOffset) : std::int16_t{0};
+    frame.beacons = {};
+    frame.beacons.count = static_cast<std::uint8_t>(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        BeaconSighting& sighting = frame.beacons.sightings[k];
+        sighting.id = in.u8(kFrameSightingsOffset + kFrameSightingSize * k);
+        sighting.bearing = in.f64(kFrameSightingsOffset + kFrameSightingSize * k + 1);
+        if (!std::isfinite(sighting.bearing)) {
+            reason = "beacon sighting " + std::to_string(k) + " (offset "
+                     + std::to_string(kFrameSightingsOffset + kFrameSightingSize * k + 1)
+                     + "): bearing is not finite";
+            return DecodeError::NonFinite;
+        }
+    }
+    return DecodeError::None;
+}
+
+}  // namespace
+
+DecodeError decode(std::span<const std::uint8_t> datagram, FramePacket& packet,
+                   std::string& reason) {
     PacketHeader header;
     if (const auto error = open_packet(datagram, {PacketType::SensorFrame}, header);
         error != DecodeError::None) {
+        reason = std::string(to_string(error));
+        if (error == DecodeError::BadLength) {
+            reason += ": sensor frame length " + std::to_string(ByteReader(datagram).u16(6))
+                      + " is neither 36 nor 52 + 9n (n = 0 … " + std::to_string(kMaxSightings)
+                      + " beacon sightings)";
+        }
         return error;
     }
     const ByteReader in(datagram);
-    SensorFrame& frame = packet.frame;
+    SensorFrame frame;
     frame.time = to_seconds(header.time_us);
     frame.sequence = header.sequence;
     frame.encoder_counts = {in.i32(20), in.i32(24)};
     frame.ir_adc = {in.u16(28), in.u16(30)};
     const std::uint16_t flags = in.u16(32);
     frame.ir_valid = {(flags & kFrontValidBit) != 0, (flags & kRearValidBit) != 0};
+    if (datagram.size() > kFrameSize) {
+        if (const auto error = decode_frame_extension(in, datagram.size(), frame, reason);
+            error != DecodeError::None) {
+            return error;
+        }
+    }
+    packet.frame = frame;
     packet.flags = {(flags & kWatchdogBit) != 0, (flags & kPausedBit) != 0,
                     (flags & kResetBit) != 0};
+    reason.clear();
     return DecodeError::None;
+}
+
+DecodeError decode(std::span<const std::uint8_t> datagram, FramePacket& packet) {
+    std::string reason;
+    return decode(datagram, packet, reason);
 }
 
 // --- Wheel command: 20 f64 V1 (right), 28 f64 V2 (left), m/s.

@@ -1,6 +1,7 @@
 #include "legofeup/core/controller.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 namespace legofeup {
 
@@ -21,6 +22,9 @@ ControllerKind kind_of(const Controller& controller) {
             return ControllerKind::FollowCircle;
         }
         ControllerKind operator()(const FollowPath&) const { return ControllerKind::FollowPath; }
+        ControllerKind operator()(const VisitWaypoints&) const {
+            return ControllerKind::VisitWaypoints;
+        }
     };
     return std::visit(KindOf{}, controller);
 }
@@ -37,15 +41,24 @@ const char* to_string(ControllerKind kind) {
             return "FollowCircle";
         case ControllerKind::FollowPath:
             return "FollowPath";
+        case ControllerKind::VisitWaypoints:
+            return "visit_waypoints";
     }
     return "unknown";
 }
 
 ControlOutput run_controller(Controller& controller, const Pose2& estimate,
                              const MotionLimits& limits, const ControllerGains& gains,
-                             ControllerStatus& status) {
+                             double period, ControllerStatus& status) {
     const ControlOutput out = std::visit(
-        [&](auto& routine) { return routine.step(estimate, limits, gains); }, controller);
+        [&](auto& routine) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(routine)>, VisitWaypoints>) {
+                return routine.step(estimate, limits, gains, period);
+            } else {
+                return routine.step(estimate, limits, gains);
+            }
+        },
+        controller);
     status.kind = kind_of(controller);
     status.cross_track_error = out.cross_track_error;
     status.heading_error = out.heading_error;
@@ -54,6 +67,9 @@ ControlOutput run_controller(Controller& controller, const Pose2& estimate,
         status.segment = path->segment_index();
         status.lap = path->completed_laps();
         status.finished = path->finished();
+    } else if (const auto* waypoints = std::get_if<VisitWaypoints>(&controller)) {
+        status.segment = waypoints->waypoint_index();
+        status.lap = waypoints->completed_laps();
     } else {
         status.segment = -1;
         status.lap = 0;

@@ -1,14 +1,36 @@
 #include "legofeup/core/legofeup_loop.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 
+#include "legofeup/core/beacon_bearing.hpp"
 #include "legofeup/core/chi_square.hpp"
+#include "legofeup/core/compass_model.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
 namespace legofeup {
+namespace {
+
+/// P0 of the fusion filter's (v, ω): the robot starts at rest, known to about 0.1 m/s.
+constexpr double kInitialVelocityVariance = 1e-2;
+
+FilterKind other_kind(FilterKind kind) {
+    return kind == FilterKind::Ekf ? FilterKind::Ukf : FilterKind::Ekf;
+}
+
+/// Wall-clock seconds `work` takes (the cost per step the beacon lesson compares).
+template <class Work>
+double timed(Work&& work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
 LegoFeupLoop::LegoFeupLoop(LoopConfig config)
     : config_(std::move(config)), controller_(config_.controller) {
     if (const auto issues = validate(config_); !issues.empty()) {
@@ -18,25 +40,47 @@ LegoFeupLoop::LegoFeupLoop(LoopConfig config)
     reset();
 }
 
+bool LegoFeupLoop::uses_pose_filter() const {
+    return config_.lesson.localisation != Localisation::GyroFusion;
+}
+
 void LegoFeupLoop::apply_tuning() {
     const FilterTuning& tuning = config_.filter;
+    const LessonFilters& lesson = config_.lesson;
     process_noise_ = Eigen::Vector2d(tuning.q11, tuning.q22).asDiagonal();
     ir_noise_ = Eigen::Vector2d(tuning.r11, tuning.r22).asDiagonal();
     gate_.enabled = tuning.gate_enabled;
     gate_.threshold = chi_square_quantile(tuning.gate_probability, WallMeasurement::kSize);
-    filter_.set_limits(tuning.limits);
+    beacon_gate_.enabled = lesson.beacons.gate_enabled;
+    beacon_gate_.threshold =
+        chi_square_quantile(lesson.beacons.gate_probability, BeaconBearingMeasurement::kSize);
+    filter_.set_kind(lesson.kind);
+    shadow_.set_kind(other_kind(lesson.kind));
+    for (PoseFilter* filter : {&filter_, &shadow_}) {
+        filter->set_limits(tuning.limits);
+        filter->set_ukf_params(lesson.ukf);
+    }
+    fusion_.set_limits(tuning.limits);
+    speeds_.configure(lesson, config_.odometry);
 }
 
 void LegoFeupLoop::reset() {
     const InitialBelief& initial = config_.initial;
     const StateCovariance P0 =
         StateVector(initial.var_x, initial.var_y, initial.var_theta).asDiagonal();
-    filter_.reset(to_state(initial.pose), P0);
+    const StateVector x0 = to_state(initial.pose);
+    filter_.reset(x0, P0);
+    shadow_.reset(x0, P0);
+    fusion_.reset(x0, P0, kInitialVelocityVariance);
+    speeds_.reset(wrap_angle(initial.pose.theta));
     odometry_pose_ = {initial.pose.x, initial.pose.y, wrap_angle(initial.pose.theta)};
     controller_ = config_.controller;
     have_counts_ = false;
     steps_ = 0;
+    last_time_ = 0.0;
     snapshot_ = LoopSnapshot{};
+    snapshot_.localisation = config_.lesson.localisation;
+    snapshot_.filter_kind = filter_.kind();
     snapshot_.estimate = filter_.state();
     snapshot_.covariance = filter_.covariance();
     snapshot_.odometry_pose = odometry_pose_;
@@ -44,9 +88,22 @@ void LegoFeupLoop::reset() {
 
 std::vector<ConfigIssue> LegoFeupLoop::reconfigure(LoopConfig config) {
     auto issues = validate(config);
-    if (issues.empty()) {
-        config_ = std::move(config);
-        apply_tuning();
+    if (!issues.empty()) {
+        return issues;
+    }
+    const Localisation before = config_.lesson.localisation;
+    const Localisation after = config.lesson.localisation;
+    const bool shadow_starts = config.lesson.compare_kinds && !config_.lesson.compare_kinds;
+    config_ = std::move(config);
+    // A new localisation continues from the current belief rather than jumping back.
+    if (after == Localisation::GyroFusion && before != Localisation::GyroFusion) {
+        fusion_.reset(filter_.state(), filter_.covariance(), kInitialVelocityVariance);
+    } else if (before == Localisation::GyroFusion && after != Localisation::GyroFusion) {
+        filter_.reset(fusion_.pose(), fusion_.pose_covariance());
+    }
+    apply_tuning();
+    if (shadow_starts) {
+        shadow_.reset(filter_.state(), filter_.covariance());
     }
     return issues;
 }
@@ -62,13 +119,17 @@ void LegoFeupLoop::set_manual_command(const VelocityCommand& command) {
     }
 }
 
-void LegoFeupLoop::predict_from_encoders(const SensorFrame& frame) {
+// Eq. 9 and 8: this period's wheel distances, d and Δθ; dead reckoning (eq. 7) alongside.
+// Sets snapshot_.increment; whether a prediction follows is snapshot_.predict_status's
+// business (NotAttempted when there was no previous frame or the encoders glitched).
+void LegoFeupLoop::predict_from_encoders(const SensorFrame& frame, double period) {
     LoopSnapshot& s = snapshot_;
     s.increment = {};
     s.odometry_glitch = false;
     s.predict_status = StepStatus::NotAttempted;
+    speeds_.step(frame, period, s.speeds, s.readings);
+    bool predict = false;
     if (have_counts_) {
-        // Eq. 9: pulses this period → wheel distances; eq. 8: d and Δθ.
         const OdometryIncrement increment = odometry_increment(
             encoder_delta(frame.encoder_counts[0], last_counts_[0]),
             encoder_delta(frame.encoder_counts[1], last_counts_[1]), config_.odometry);
@@ -77,16 +138,40 @@ void LegoFeupLoop::predict_from_encoders(const SensorFrame& frame) {
             s.odometry_glitch = true;
         } else {
             s.increment = increment;
-            // Eq. 11–13: X̂ ← f(X̂, U, 0), P ← ∇f_X P ∇f_Xᵀ + ∇f_q Q ∇f_qᵀ.
-            s.predict_status = filter_.predict(OdometryProcessModel(increment, process_noise_));
             odometry_pose_ = advance_pose(odometry_pose_, increment);  // eq. 7, no updates
+            predict = true;
         }
     }
     last_counts_ = frame.encoder_counts;
     have_counts_ = true;
+
+    s.filter_seconds = 0.0;
+    s.shadow_filter_seconds = 0.0;
+    if (!uses_pose_filter()) {
+        if (predict) {
+            s.filter_seconds = timed([&] { run_gyro_fusion(&frame, period); });
+        }
+        return;  // the fusion filter starts with the second frame (it needs a period)
+    }
+    s.filter_seconds = timed([&] { run_pose_filter(filter_, &frame, predict, true); });
+    if (config_.lesson.compare_kinds) {
+        s.shadow_filter_seconds = timed([&] { run_pose_filter(shadow_, &frame, predict, false); });
+    }
 }
 
-void LegoFeupLoop::observe_and_update(const SensorFrame& frame) {
+void LegoFeupLoop::predict_pose(PoseFilter& filter, const OdometryIncrement& increment) {
+    // Eq. 11–13: X̂ ← f(X̂, U, 0), P ← ∇f_X P ∇f_Xᵀ + ∇f_q Q ∇f_qᵀ; the compass lesson's Q
+    // depends on the motion and heading (paper 004 eq. 5).
+    const StepStatus status =
+        config_.lesson.localisation == Localisation::Compass
+            ? filter.predict(CompassOdometryProcessModel(increment, config_.lesson.compass))
+            : filter.predict(OdometryProcessModel(increment, process_noise_));
+    if (&filter == &filter_) {
+        snapshot_.predict_status = status;
+    }
+}
+
+void LegoFeupLoop::read_ir(const SensorFrame& frame) {
     LoopSnapshot& s = snapshot_;
     for (int i = 0; i < kIrSensorCount; ++i) {
         const auto index = static_cast<std::size_t>(i);
@@ -96,44 +181,134 @@ void LegoFeupLoop::observe_and_update(const SensorFrame& frame) {
                              ? distance_from_adc(sample.adc, config_.ir_curve)  // eq. 2
                              : IrDistance{0.0, IrStatus::Unavailable};
     }
-    s.association = AssociationResult{};
-    s.update = WallUpdateReport{};
     s.observation_available =
         s.ir[kFrontSensor].reading.in_range() && s.ir[kRearSensor].reading.in_range();
+    if (s.observation_available) {
+        // Eq. 3: (d_s1, d_s2) → (ObsAng, d_w, D_c).
+        s.observation = observe_wall(s.ir[kFrontSensor].reading.distance,
+                                     s.ir[kRearSensor].reading.distance, config_.ir_mount);
+    }
+}
+
+void LegoFeupLoop::update_with_walls(PoseFilter& filter, bool primary) {
+    LoopSnapshot& s = snapshot_;
     if (!s.observation_available) {
         return;
     }
-    // Eq. 3: (d_s1, d_s2) → (ObsAng, d_w, D_c).
-    s.observation = observe_wall(s.ir[kFrontSensor].reading.distance,
-                                 s.ir[kRearSensor].reading.distance, config_.ir_mount);
-    // Fig. 4: which wall, judged from the current (predicted) estimate.
-    s.association =
-        associate_wall(to_pose(filter_.state()), s.observation, config_.walls, config_.ir_mount,
+    // Fig. 4: which wall, judged from this filter's current (predicted) estimate.
+    const AssociationResult association =
+        associate_wall(to_pose(filter.state()), s.observation, config_.walls, config_.ir_mount,
                        config_.ir_curve.max_range, config_.association);
-    if (s.association.associated() && config_.filter.wall_updates) {
-        // Eq. 14–21.
-        const WallMeasurement measurement(config_.walls.line(s.association.wall),
-                                          s.association.side, s.observation, ir_noise_);
-        s.update = filter_.update(measurement, gate_);
+    if (primary) {
+        s.association = association;
     }
+    if (association.associated() && config_.filter.wall_updates) {
+        // Eq. 14–21.
+        const WallMeasurement measurement(config_.walls.line(association.wall), association.side,
+                                          s.observation, ir_noise_);
+        const WallUpdateReport report = filter.update(measurement, gate_);
+        if (primary) {
+            s.update = report;
+        }
+    }
+}
+
+// Paper 002: each sighting is one bearing measurement h(X) = atan2(b_y − y, b_x − x) − θ,
+// applied in turn (independent noises make sequential updates equal to a stacked one).
+void LegoFeupLoop::update_with_beacons(PoseFilter& filter, const SensorFrame& frame, bool primary) {
+    const int count = std::min<int>(frame.beacons.count, kMaxBeaconSightings);
+    for (int i = 0; i < count; ++i) {
+        const BeaconSighting& sighting = frame.beacons.sightings[static_cast<std::size_t>(i)];
+        BeaconUpdate update;
+        update.id = sighting.id;
+        update.bearing = sighting.bearing;
+        if (const Beacon* beacon = find_beacon(config_.beacons, sighting.id)) {
+            update.known = true;
+            const BeaconBearingMeasurement measurement(beacon->position, sighting.bearing,
+                                                       config_.lesson.beacons.r_bearing);
+            // On top of the beacon (within 1 mm) the bearing says nothing: skip it.
+            if (measurement.usable(filter.state())) {
+                const auto report = filter.update(measurement, beacon_gate_);
+                update.predicted = report.predicted(0);
+                update.status = report.status;
+                update.nis = report.nis;
+            }
+        }
+        if (primary) {
+            snapshot_.beacons.updates[static_cast<std::size_t>(i)] = update;
+            snapshot_.beacons.count = static_cast<std::uint8_t>(i + 1);
+        }
+    }
+}
+
+void LegoFeupLoop::update_with_compass(PoseFilter& filter, const LoopSnapshot& s) {
+    if (s.readings.has_compass && config_.lesson.compass.use_compass) {
+        filter.update(
+            CompassMeasurement(s.readings.compass_heading, config_.lesson.compass.r_compass));
+    }
+}
+
+// One filter's whole period: predict (when there was odometry), then the localisation's
+// corrections. `frame` is null when only a prediction is due.
+void LegoFeupLoop::run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict,
+                                   bool primary) {
+    if (predict) {
+        predict_pose(filter, snapshot_.increment);
+    }
+    if (frame == nullptr) {
+        return;
+    }
+    switch (config_.lesson.localisation) {
+        case Localisation::Walls:
+            update_with_walls(filter, primary);
+            break;
+        case Localisation::Beacons:
+            if (frame->has_beacon_scan) {
+                update_with_beacons(filter, *frame, primary);
+            }
+            break;
+        case Localisation::Compass:
+            update_with_compass(filter, snapshot_);
+            break;
+        case Localisation::GyroFusion:
+            break;  // runs in run_gyro_fusion
+    }
+}
+
+void LegoFeupLoop::run_gyro_fusion(const SensorFrame* frame, double period) {
+    LoopSnapshot& s = snapshot_;
+    const VelocityCommand* encoders =
+        frame != nullptr && s.speeds.valid ? &s.speeds.body_encoders : nullptr;
+    const double* gyro = frame != nullptr && s.readings.has_gyro ? &s.readings.gyro_rate : nullptr;
+    const GyroFusionStep step = fusion_.step(period, speeds_.measured_acceleration(), encoders,
+                                             gyro, config_.lesson.gyro_fusion);
+    s.predict_status = step.predict;
 }
 
 const LoopSnapshot& LegoFeupLoop::step(const SensorFrame& frame) {
     LoopSnapshot& s = snapshot_;
+    const double period =
+        steps_ > 0 && frame.time > last_time_ ? frame.time - last_time_ : config_.control_period;
     s.step = ++steps_;
     s.time = frame.time;
     s.sequence = frame.sequence;
     s.frame_missing = false;
     s.frame = frame;
+    s.association = AssociationResult{};
+    s.update = WallUpdateReport{};
+    s.beacons = BeaconUpdates{};
 
-    predict_from_encoders(frame);
-    observe_and_update(frame);
+    read_ir(frame);
+    predict_from_encoders(frame, period);
     control_and_publish();
+    last_time_ = frame.time;
     return s;
 }
 
 const LoopSnapshot& LegoFeupLoop::step_without_frame(double time) {
     LoopSnapshot& s = snapshot_;
+    const double period =
+        steps_ > 0 && time > last_time_ ? time - last_time_ : config_.control_period;
     s.step = ++steps_;
     s.time = time;
     s.frame_missing = true;
@@ -144,30 +319,57 @@ const LoopSnapshot& LegoFeupLoop::step_without_frame(double time) {
     // in which the robot moved in some unknown way; its odometry arrives with the next frame.
     s.increment = {};
     s.odometry_glitch = false;
-    s.predict_status = have_counts_
-                           ? filter_.predict(OdometryProcessModel(s.increment, process_noise_))
-                           : StepStatus::NotAttempted;
+    s.predict_status = StepStatus::NotAttempted;
+    s.filter_seconds = 0.0;
+    s.shadow_filter_seconds = 0.0;
+    if (have_counts_) {
+        if (uses_pose_filter()) {
+            run_pose_filter(filter_, nullptr, true, true);
+            if (config_.lesson.compare_kinds) {
+                run_pose_filter(shadow_, nullptr, true, false);
+            }
+        } else {
+            run_gyro_fusion(nullptr, period);
+        }
+    }
     for (IrSample& sample : s.ir) {
         sample = IrSample{0, IrDistance{0.0, IrStatus::Unavailable}};
     }
     s.observation_available = false;
     s.association = AssociationResult{};
     s.update = WallUpdateReport{};
+    s.beacons = BeaconUpdates{};
+    s.speeds = SpeedEstimates{};
+    s.readings = ExtraReadings{};
     control_and_publish();
+    last_time_ = time;
     return s;
 }
 
 void LegoFeupLoop::control_and_publish() {
     LoopSnapshot& s = snapshot_;
+    s.localisation = config_.lesson.localisation;
+    s.filter_kind = filter_.kind();
+    if (uses_pose_filter()) {
+        s.estimate = filter_.state();
+        s.covariance = filter_.covariance();
+        s.fused_velocity = {};
+    } else {
+        s.estimate = fusion_.pose();
+        s.covariance = fusion_.pose_covariance();
+        s.fused_velocity = fusion_.velocity();
+    }
+    s.shadow = ShadowEstimate{};
+    if (config_.lesson.compare_kinds && uses_pose_filter()) {
+        s.shadow = {true, shadow_.kind(), shadow_.state(), shadow_.covariance()};
+    }
     // Control module on the updated estimate; eq. 1 turns (V, W) into wheel speeds.
-    const ControlOutput control = run_controller(controller_, to_pose(filter_.state()),
-                                                 config_.motion, config_.gains, s.controller);
+    const ControlOutput control =
+        run_controller(controller_, to_pose(s.estimate), config_.motion, config_.gains,
+                       config_.control_period, s.controller);
     s.velocity = control.command;
     s.wheels = limit_wheel_speeds(wheel_speeds(control.command, config_.odometry.wheel_base),
                                   config_.max_wheel_speed);
-
-    s.estimate = filter_.state();
-    s.covariance = filter_.covariance();
     s.odometry_pose = odometry_pose_;
 }
 

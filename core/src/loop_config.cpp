@@ -65,6 +65,17 @@ void check_controller(ConfigChecker& check, const Controller& controller) {
                         check.positive(field + ".sweep", arc.sweep, 1e3);
                     }
                 }
+            } else if constexpr (std::is_same_v<Routine, VisitWaypoints>) {
+                check.require(!routine.waypoints().empty(), "controller.waypoints", 0.0,
+                              "needs at least one waypoint");
+                for (std::size_t i = 0; i < routine.waypoints().size(); ++i) {
+                    const Vector2& point = routine.waypoints()[i];
+                    check.require(point.allFinite(),
+                                  "controller.waypoints[" + std::to_string(i) + "]",
+                                  std::isfinite(point.x()) ? point.y() : point.x(),
+                                  "a waypoint must be finite");
+                }
+                check.in_range("controller.pause", routine.pause(), 0.0, 600.0);
             }
         },
         controller);
@@ -72,6 +83,60 @@ void check_controller(ConfigChecker& check, const Controller& controller) {
 
 void check_variance(ConfigChecker& check, const std::string& field, double value) {
     check.in_range(field, value, kMinUserVariance, kMaxUserVariance);
+}
+
+// The further lessons' filters (field names are the configuration file's keys).
+void check_lesson_filters(ConfigChecker& check, const LessonFilters& lesson) {
+    // The smallest sigma-point dimension is the pose's 3 (updates); n + κ must stay positive.
+    check.in_range("filter.ukf_kappa", lesson.ukf.kappa, -2.9, 100.0);
+    check.in_range("beacons.r_bearing", lesson.beacons.r_bearing, kMinUserVariance, 100.0);
+    check.require(lesson.beacons.gate_probability > 0.0 && lesson.beacons.gate_probability < 1.0,
+                  "beacons.gate_probability", lesson.beacons.gate_probability,
+                  "must be strictly between 0 and 1");
+    const WheelSpeedKfTuning& wheel = lesson.wheel_speed;
+    check_variance(check, "wheel_speed_kf.q_angle", wheel.q_angle);
+    check_variance(check, "wheel_speed_kf.q_rate", wheel.q_rate);
+    check_variance(check, "wheel_speed_kf.r_right", wheel.r_right);
+    check_variance(check, "wheel_speed_kf.r_left", wheel.r_left);
+    check_variance(check, "wheel_speed_kf.p0", wheel.p0);
+    const VelocityKfTuning& velocity = lesson.velocity;
+    check_variance(check, "velocity_kf.q_v", velocity.q_v);
+    check_variance(check, "velocity_kf.q_w", velocity.q_w);
+    check_variance(check, "velocity_kf.r_v", velocity.r_v);
+    check_variance(check, "velocity_kf.r_w", velocity.r_w);
+    check_variance(check, "velocity_kf.p0", velocity.p0);
+    const GyroFusionTuning& fusion = lesson.gyro_fusion;
+    check_variance(check, "gyro_fusion.q_position", fusion.q_position);
+    check_variance(check, "gyro_fusion.q_heading", fusion.q_heading);
+    check_variance(check, "gyro_fusion.q_v", fusion.q_v);
+    check_variance(check, "gyro_fusion.q_w", fusion.q_w);
+    check_variance(check, "gyro_fusion.r_v_encoders", fusion.r_v_encoders);
+    check_variance(check, "gyro_fusion.r_w_encoders", fusion.r_w_encoders);
+    check_variance(check, "gyro_fusion.r_w_gyro", fusion.r_w_gyro);
+    const CompassTuning& compass = lesson.compass;
+    check.in_range("compass.k_d", compass.k_d, 0.0, 100.0);
+    check.in_range("compass.k_dtheta", compass.k_dtheta, 0.0, 100.0);
+    check.in_range("compass.k_theta", compass.k_theta, 0.0, 100.0);
+    check_variance(check, "compass.r_compass", compass.r_compass);
+    const ExtraSensorCalibration& calibration = lesson.calibration;
+    check.in_range("calibration.gyro_offset", calibration.gyro_offset, 0.0, 1023.0);
+    check.positive("calibration.gyro_counts_per_dps", calibration.gyro_counts_per_dps, 1000.0);
+    check.positive("calibration.accel_counts_per_g", calibration.accel_counts_per_g, 1e5);
+    check.in_range("calibration.gravity", calibration.gravity, 1.0, 100.0);
+}
+
+void check_beacons(ConfigChecker& check, const BeaconMap& beacons) {
+    for (std::size_t i = 0; i < beacons.size(); ++i) {
+        const Beacon& beacon = beacons[i];
+        const std::string field = "beacons[" + std::to_string(i) + "]";
+        check.in_range(field + ".id", beacon.id, 0.0, 255.0);
+        check.require(beacon.position.allFinite(), field + ".x", beacon.position.x(),
+                      "a beacon's position must be finite");
+        for (std::size_t j = 0; j < i; ++j) {
+            check.require(beacons[j].id != beacon.id, field + ".id", beacon.id,
+                          "another beacon has the same id");
+        }
+    }
 }
 
 }  // namespace
@@ -146,6 +211,10 @@ std::vector<ConfigIssue> validate(const LoopConfig& config) {
     check.positive("gains.position_tolerance", config.gains.position_tolerance, 10.0);
     check.positive("gains.heading_tolerance", config.gains.heading_tolerance, kPi);
     check_controller(check, config.controller);
+
+    check_lesson_filters(check, config.lesson);
+    check_beacons(check, config.beacons);
+    check.positive("simulator.control_period", config.control_period, 10.0);
 
     check.positive("max_wheel_speed", config.max_wheel_speed, 10.0);
     check.positive("max_wheel_travel_per_step", config.max_wheel_travel_per_step, 10.0);

@@ -61,6 +61,74 @@ void RunMetricsAccumulator::add(const LoopSnapshot& snapshot, const Pose2& truth
         ++nees_count_;
         nees_inside_ += m.nees_bounds.contains(nees) ? 1U : 0U;
     }
+
+    const double odometry_heading_error =
+        std::abs(wrap_angle(truth.theta - snapshot.odometry_pose.theta));
+    sum_odometry_heading_squared_ += odometry_heading_error * odometry_heading_error;
+    m.max_odometry_heading_error = std::max(m.max_odometry_heading_error, odometry_heading_error);
+    m.final_odometry_heading_error = odometry_heading_error;
+
+    for (std::size_t i = 0; i < snapshot.beacons.count; ++i) {
+        const BeaconUpdate& update = snapshot.beacons.updates[i];
+        m.beacon_bearings += update.known ? 1U : 0U;
+        if (update.status == StepStatus::Applied) {
+            ++m.beacon_updates_applied;
+            sum_beacon_nis_ += update.nis;
+        }
+    }
+    if (snapshot.readings.has_compass) {
+        const double error = wrap_angle(snapshot.readings.compass_heading - truth.theta);
+        sum_compass_squared_ += error * error;
+        ++m.compass_steps;
+    }
+    if (snapshot.readings.has_gyro) {
+        m.final_gyro_heading_error =
+            std::abs(wrap_angle(snapshot.readings.gyro_heading - truth.theta));
+        ++m.gyro_steps;
+    }
+    if (snapshot.shadow.active) {
+        ++m.shadow_steps;
+        const double error = std::hypot(truth.x - snapshot.shadow.estimate(kX),
+                                        truth.y - snapshot.shadow.estimate(kY));
+        const double heading = wrap_angle(truth.theta - snapshot.shadow.estimate(kTheta));
+        sum_shadow_position_squared_ += error * error;
+        sum_shadow_heading_squared_ += heading * heading;
+        m.shadow_final_position_error = error;
+        const double shadow_nees = normalized_estimation_error(
+            to_state(truth), snapshot.shadow.estimate, snapshot.shadow.covariance);
+        if (std::isfinite(shadow_nees)) {
+            sum_shadow_nees_ += shadow_nees;
+            ++shadow_nees_count_;
+        }
+    }
+    sum_filter_seconds_ += snapshot.filter_seconds;
+    sum_shadow_filter_seconds_ += snapshot.shadow_filter_seconds;
+}
+
+void RunMetricsAccumulator::add(const LoopSnapshot& snapshot, const GroundTruth& truth) {
+    add(snapshot, truth.pose);
+    RunMetrics& m = metrics_;
+    const SpeedEstimates& speeds = snapshot.speeds;
+    if (!speeds.valid) {
+        return;
+    }
+    ++m.speed_steps;
+    const std::array<double, 2> true_wheels{truth.wheel_surface_speeds.right,
+                                            truth.wheel_surface_speeds.left};
+    for (std::size_t i = 0; i < 2; ++i) {
+        const double kf = speeds.wheel_kf[i] - true_wheels[i];
+        const double differentiated = speeds.wheel_differentiated[i] - true_wheels[i];
+        sum_wheel_kf_squared_ += kf * kf;
+        sum_wheel_differentiated_squared_ += differentiated * differentiated;
+    }
+    if (speeds.body_kf_valid) {
+        ++m.velocity_kf_steps;
+        const auto squared = [](double a) { return a * a; };
+        sum_velocity_kf_squared_ += squared(speeds.body_kf.v - truth.velocity.v);
+        sum_velocity_encoders_squared_ += squared(speeds.body_encoders.v - truth.velocity.v);
+        sum_turn_rate_kf_squared_ += squared(speeds.body_kf.w - truth.velocity.w);
+        sum_turn_rate_encoders_squared_ += squared(speeds.body_encoders.w - truth.velocity.w);
+    }
 }
 
 RunMetrics RunMetricsAccumulator::result() const {
@@ -71,6 +139,28 @@ RunMetrics RunMetricsAccumulator::result() const {
         m.rms_heading_error = std::sqrt(sum_heading_squared_ / steps);
         m.rms_odometry_position_error = std::sqrt(sum_odometry_squared_ / steps);
         m.rms_estimate_to_odometry = std::sqrt(sum_estimate_to_odometry_squared_ / steps);
+        m.rms_odometry_heading_error = std::sqrt(sum_odometry_heading_squared_ / steps);
+        m.mean_filter_microseconds = 1e6 * sum_filter_seconds_ / steps;
+        m.mean_shadow_filter_microseconds = 1e6 * sum_shadow_filter_seconds_ / steps;
+    }
+    const auto rms = [](double sum, std::uint64_t count) {
+        return count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+    };
+    if (m.beacon_updates_applied > 0) {
+        m.mean_beacon_nis = sum_beacon_nis_ / static_cast<double>(m.beacon_updates_applied);
+    }
+    m.rms_wheel_speed_error_kf = rms(sum_wheel_kf_squared_, 2 * m.speed_steps);
+    m.rms_wheel_speed_error_differentiated =
+        rms(sum_wheel_differentiated_squared_, 2 * m.speed_steps);
+    m.rms_velocity_error_kf = rms(sum_velocity_kf_squared_, m.velocity_kf_steps);
+    m.rms_velocity_error_encoders = rms(sum_velocity_encoders_squared_, m.velocity_kf_steps);
+    m.rms_turn_rate_error_kf = rms(sum_turn_rate_kf_squared_, m.velocity_kf_steps);
+    m.rms_turn_rate_error_encoders = rms(sum_turn_rate_encoders_squared_, m.velocity_kf_steps);
+    m.rms_compass_heading_error = rms(sum_compass_squared_, m.compass_steps);
+    m.shadow_rms_position_error = rms(sum_shadow_position_squared_, m.shadow_steps);
+    m.shadow_rms_heading_error = rms(sum_shadow_heading_squared_, m.shadow_steps);
+    if (shadow_nees_count_ > 0) {
+        m.shadow_mean_nees = sum_shadow_nees_ / static_cast<double>(shadow_nees_count_);
     }
     if (nees_count_ > 0) {
         m.mean_nees = sum_nees_ / static_cast<double>(nees_count_);

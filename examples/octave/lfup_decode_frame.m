@@ -1,8 +1,13 @@
 function [frame, reason] = lfup_decode_frame (bytes)
-  % LFUP_DECODE_FRAME  A SensorFrame (type 0x01, 36 bytes) from a datagram.
+  % LFUP_DECODE_FRAME  A SensorFrame (type 0x01, 36 bytes, or 52 + 9n with the extension
+  %   block of the optional sensors) from a datagram.
   %   FRAME has sequence, time_us (uint64), time (s), encoders [right left] (counts,
   %   1 count = 1 degree), ir_adc [front rear] (raw 10-bit A/D), ir_valid [front rear]
-  %   and the flags watchdog, paused and reset. REASON is "" or why it was dropped.
+  %   and the flags watchdog, paused and reset; and the optional sensors, each [] when the
+  %   frame does not carry it: gyro_raw (counts), accel_raw [right_fwd right_left; left_fwd
+  %   left_left] (counts), compass_deg (whole degrees) and beacons, an n-by-2 matrix of
+  %   [id bearing_rad] rows (zeros (0, 2): the scanner saw nothing).
+  %   REASON is "" or why it was dropped.
   [header, reason] = lfup_decode_header (bytes, 0x01);
   frame = struct ();
   if (! isempty (reason))
@@ -19,4 +24,44 @@ function [frame, reason] = lfup_decode_frame (bytes)
   frame.watchdog = bitand (flags, 4) != 0;
   frame.paused = bitand (flags, 8) != 0;
   frame.reset = bitand (flags, 16) != 0;
+  frame.gyro_raw = [];
+  frame.accel_raw = [];
+  frame.compass_deg = [];
+  frame.beacons = [];
+  if (numel (bytes) > 36)
+    [frame, reason] = decode_extension (bytes, frame);
+  endif
+endfunction
+
+function [frame, reason] = decode_extension (bytes, frame)
+  % docs/protocol.md, "SensorFrame extension"; the length (52 + 9n) was checked already.
+  reason = "";
+  extras = double (bytes(37));
+  count = double (bytes(38));
+  if (bitand (extras, 15) == 0 || count > 8 || (count > 0 && ! bitand (extras, 8))
+      || numel (bytes) != 52 + 9 * count)
+    reason = "bad_length";
+    return;
+  endif
+  beacons = zeros (count, 2);
+  for k = 1:count
+    at = 52 + 9 * (k - 1);  % 0-based offset of the sighting
+    beacons(k, :) = [double(bytes(at + 1)), lfup_from_le(bytes(at + 2:at + 9), "double")];
+  endfor
+  if (! all (isfinite (beacons(:, 2))))
+    reason = "non_finite";
+    return;
+  endif
+  if (bitand (extras, 1))
+    frame.gyro_raw = double (lfup_from_le (bytes(39:40), "int16"));
+  endif
+  if (bitand (extras, 2))
+    frame.accel_raw = reshape (double (lfup_from_le (bytes(41:48), "int16")), 2, 2).';
+  endif
+  if (bitand (extras, 4))
+    frame.compass_deg = double (lfup_from_le (bytes(49:50), "int16"));
+  endif
+  if (bitand (extras, 8))
+    frame.beacons = beacons;
+  endif
 endfunction

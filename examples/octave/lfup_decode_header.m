@@ -18,11 +18,11 @@ function [header, reason] = lfup_decode_header (bytes, accepted_types)
     reason = "bad_version";
   elseif (lfup_packet_size (bytes(6)) == 0)
     reason = "unknown_type";
-  elseif (double (lfup_from_le (bytes(7:8), "uint16")) != lfup_packet_size (bytes(6)))
+  elseif (! valid_length (bytes(6), double (lfup_from_le (bytes(7:8), "uint16"))))
     reason = "bad_length";
-  elseif (n < lfup_packet_size (bytes(6)))
+  elseif (n < double (lfup_from_le (bytes(7:8), "uint16")))
     reason = "truncated";
-  elseif (n > lfup_packet_size (bytes(6)))
+  elseif (n > double (lfup_from_le (bytes(7:8), "uint16")))
     reason = "oversized";
   elseif (lfup_from_le (bytes(13:20), "uint64") > bitshift (uint64 (1), 50))
     reason = "bad_time";
@@ -34,4 +34,10 @@ function [header, reason] = lfup_decode_header (bytes, accepted_types)
     header.sequence = double (lfup_from_le (bytes(9:12), "uint32"));
     header.time_us = lfup_from_le (bytes(13:20), "uint64");
   endif
+endfunction
+
+function ok = valid_length (type, length)
+  % The type's size; a sensor frame may also carry the extension block: 52 + 9n, n <= 8.
+  ok = length == lfup_packet_size (type) ...
+       || (type == 0x01 && length >= 52 && length <= 124 && mod (length - 52, 9) == 0);
 endfunction

@@ -78,6 +78,26 @@ FLAG_WATCHDOG = 1 << 2
 FLAG_PAUSED = 1 << 3
 FLAG_RESET = 1 << 4
 
+# Sensor frame extension (docs/protocol.md, "SensorFrame extension"): present when the
+# frame's length is 52 + 9n instead of 36. The extras byte (offset 36) says which optional
+# sensors the frame carries.
+EXTRA_GYRO = 1 << 0
+EXTRA_ACCELEROMETERS = 1 << 1
+EXTRA_COMPASS = 1 << 2
+EXTRA_BEACON_SCAN = 1 << 3
+FRAME_SIGHTINGS_OFFSET = 52
+FRAME_SIGHTING_SIZE = 9   # u8 id + f64 bearing
+MAX_BEACON_SIGHTINGS = 8
+
+
+def frame_length_valid(length: int) -> bool:
+    """36 (the plain frame) or 52 + 9n with n = 0 … 8 sightings."""
+    extra = length - FRAME_SIGHTINGS_OFFSET
+    return length == PACKET_SIZES[PacketType.SENSOR_FRAME] or (
+        0 <= extra <= FRAME_SIGHTING_SIZE * MAX_BEACON_SIGHTINGS
+        and extra % FRAME_SIGHTING_SIZE == 0)
+
+
 # Control request flag bits (offset 25, u8).
 FLAG_POSE_GIVEN = 1 << 0
 
@@ -196,7 +216,8 @@ def decode_header(datagram: bytes) -> Header:
         packet_type = PacketType(raw_type)
     except ValueError:
         raise DecodeError("unknown_type", f"type 0x{raw_type:02x}") from None
-    if length != PACKET_SIZES[packet_type]:
+    if not (frame_length_valid(length) if packet_type == PacketType.SENSOR_FRAME
+            else length == PACKET_SIZES[packet_type]):
         raise DecodeError("bad_length", f"length field {length} for {packet_type.name}")
     if len(datagram) < length:
         raise DecodeError("truncated", f"{len(datagram)} of {length} bytes")
@@ -217,6 +238,9 @@ def _open(datagram: bytes, *accepted: PacketType) -> Header:
 # --- Robot stream ---------------------------------------------------------------------------
 
 _FRAME = struct.Struct("<iiHHHH")  # at offset 20: counts R, L, IR front, IR rear, flags, 0
+# At offset 36: extras, beacon count, gyro, accel R fwd, R left, L fwd, L left, compass, 0
+_FRAME_EXTENSION = struct.Struct("<BBhhhhhhH")
+_SIGHTING = struct.Struct("<Bd")  # beacon id, bearing (rad)
 
 
 @dataclass
@@ -232,10 +256,22 @@ class SensorFrame:
     watchdog_stopped: bool = False
     paused: bool = False
     reset: bool = False
+    # Optional sensors of the further lessons: None when the frame does not carry them.
+    gyro_raw: Optional[int] = None     # offset + rate in °/s + bias, ≈1 count per °/s
+    # ((right forward, right left), (left forward, left left)), ≈200 counts per g
+    accel_raw: Optional[Tuple[Tuple[int, int], Tuple[int, int]]] = None
+    compass_deg: Optional[int] = None  # whole degrees, counter-clockwise from +x
+    # [(beacon id, bearing in rad relative to the heading)]; [] = scanned, saw nothing
+    beacons: Optional[List[Tuple[int, float]]] = None
 
     @property
     def time(self) -> float:
         return to_seconds(self.time_us)
+
+    @property
+    def has_extension(self) -> bool:
+        return any(v is not None for v in (self.gyro_raw, self.accel_raw, self.compass_deg,
+                                           self.beacons))
 
 
 def encode_frame(frame: SensorFrame) -> bytes:
@@ -244,18 +280,58 @@ def encode_frame(frame: SensorFrame) -> bytes:
              | (FLAG_WATCHDOG if frame.watchdog_stopped else 0)
              | (FLAG_PAUSED if frame.paused else 0)
              | (FLAG_RESET if frame.reset else 0))
-    return (_header(PacketType.SENSOR_FRAME, frame.sequence, frame.time_us)
-            + _FRAME.pack(frame.encoder_right, frame.encoder_left,
-                          frame.ir_front_adc, frame.ir_rear_adc, flags, 0))
+    plain = (_header(PacketType.SENSOR_FRAME, frame.sequence, frame.time_us)
+             + _FRAME.pack(frame.encoder_right, frame.encoder_left,
+                           frame.ir_front_adc, frame.ir_rear_adc, flags, 0))
+    if not frame.has_extension:
+        return plain
+    sightings = (frame.beacons or [])[:MAX_BEACON_SIGHTINGS]
+    extras = ((EXTRA_GYRO if frame.gyro_raw is not None else 0)
+              | (EXTRA_ACCELEROMETERS if frame.accel_raw is not None else 0)
+              | (EXTRA_COMPASS if frame.compass_deg is not None else 0)
+              | (EXTRA_BEACON_SCAN if frame.beacons is not None else 0))
+    (right_fwd, right_left), (left_fwd, left_left) = frame.accel_raw or ((0, 0), (0, 0))
+    length = FRAME_SIGHTINGS_OFFSET + FRAME_SIGHTING_SIZE * len(sightings)
+    return (plain[:6] + struct.pack("<H", length) + plain[8:]
+            + _FRAME_EXTENSION.pack(extras, len(sightings), frame.gyro_raw or 0, right_fwd,
+                                    right_left, left_fwd, left_left, frame.compass_deg or 0, 0)
+            + b"".join(_SIGHTING.pack(beacon_id, bearing) for beacon_id, bearing in sightings))
 
 
 def decode_frame(datagram: bytes) -> SensorFrame:
     header = _open(datagram, PacketType.SENSOR_FRAME)
     right, left, front, rear, flags, _reserved = _FRAME.unpack_from(datagram, HEADER_SIZE)
-    return SensorFrame(header.sequence, header.time_us, right, left, front, rear,
-                       bool(flags & FLAG_FRONT_VALID), bool(flags & FLAG_REAR_VALID),
-                       bool(flags & FLAG_WATCHDOG), bool(flags & FLAG_PAUSED),
-                       bool(flags & FLAG_RESET))
+    frame = SensorFrame(header.sequence, header.time_us, right, left, front, rear,
+                        bool(flags & FLAG_FRONT_VALID), bool(flags & FLAG_REAR_VALID),
+                        bool(flags & FLAG_WATCHDOG), bool(flags & FLAG_PAUSED),
+                        bool(flags & FLAG_RESET))
+    if len(datagram) > PACKET_SIZES[PacketType.SENSOR_FRAME]:
+        _decode_frame_extension(datagram, frame)
+    return frame
+
+
+def _decode_frame_extension(datagram: bytes, frame: SensorFrame) -> None:
+    """The optional sensors after offset 36 (the length is 52 + 9n, checked already)."""
+    (extras, count, gyro, right_fwd, right_left, left_fwd, left_left, compass,
+     _reserved) = _FRAME_EXTENSION.unpack_from(datagram, 36)
+    if extras & 0x0F == 0:
+        raise DecodeError("bad_length", "extension block without any sensor flag")
+    if count > MAX_BEACON_SIGHTINGS:
+        raise DecodeError("bad_length", f"beacon count {count} exceeds {MAX_BEACON_SIGHTINGS}")
+    if count and not extras & EXTRA_BEACON_SCAN:
+        raise DecodeError("bad_length", f"beacon count {count} without the beacon-scan flag")
+    needed = FRAME_SIGHTINGS_OFFSET + FRAME_SIGHTING_SIZE * count
+    if needed != len(datagram):
+        raise DecodeError("bad_length", f"beacon count {count} needs length {needed}, "
+                                        f"the length field says {len(datagram)}")
+    sightings = [_SIGHTING.unpack_from(datagram, FRAME_SIGHTINGS_OFFSET + FRAME_SIGHTING_SIZE * k)
+                 for k in range(count)]
+    _require_finite(*(bearing for _id, bearing in sightings))
+    frame.gyro_raw = gyro if extras & EXTRA_GYRO else None
+    frame.accel_raw = (((right_fwd, right_left), (left_fwd, left_left))
+                       if extras & EXTRA_ACCELEROMETERS else None)
+    frame.compass_deg = compass if extras & EXTRA_COMPASS else None
+    frame.beacons = sightings if extras & EXTRA_BEACON_SCAN else None
 
 
 _COMMAND = struct.Struct("<dd")  # at offset 20: V1 (right), V2 (left), m/s

@@ -77,6 +77,220 @@ Setting pose_part(std::string key, std::string field, std::string help,
     return s;
 }
 
+// A Choice bound to an enum member whose values are 0 … count−1 and named by to_string.
+template <class Enum, class Access>
+Setting choice(std::string key, std::string field, std::string help, int count, Access access) {
+    Setting s{
+        std::move(key), std::move(field), std::move(help), SettingType::Choice, {}, {}, {}, {}};
+    for (int i = 0; i < count; ++i) {
+        s.choices.emplace_back(to_string(static_cast<Enum>(i)));
+    }
+    s.get = [access](const RunConfig& c) -> SettingValue {
+        return std::string(to_string(access(c)));
+    };
+    s.set = [access, count](RunConfig& c, const SettingValue& v) {
+        const std::string& name = std::get<std::string>(v);
+        for (int i = 0; i < count; ++i) {
+            if (name == to_string(static_cast<Enum>(i))) {
+                access(c) = static_cast<Enum>(i);
+            }
+        }
+    };
+    return s;
+}
+
+// The further lessons' settings: [localisation], filter kind, and each filter's tuning.
+void add_lesson_filter_settings(std::vector<Setting>& s) {
+    s.push_back(choice<FilterKind>(
+        "filter.kind", "filter.kind", "the pose filter: ekf or ukf (may change while running)", 2,
+        [](auto& c) -> auto& { return c.lesson.kind; }));
+    s.push_back(boolean(
+        "filter.compare_kinds", "filter.compare_kinds",
+        "also run the other kind (EKF/UKF) on the same frames, for comparison only",
+        [](auto& c) -> auto& { return c.lesson.compare_kinds; }));
+    s.push_back(real(
+        "filter.ukf_kappa", "filter.ukf_kappa",
+        "UKF spread κ: sigma points at ±√((n+κ)P), weights κ/(n+κ) and 1/(2(n+κ))",
+        [](auto& c) -> auto& { return c.lesson.ukf.kappa; }));
+    s.push_back(choice<Localisation>(
+        "localisation.method", "localisation.method",
+        "what corrects the odometry: walls (IR), beacons (bearings), gyro_fusion (5-state EKF "
+        "with encoders, accelerometers, gyro) or compass",
+        4, [](auto& c) -> auto& { return c.lesson.localisation; }));
+
+    s.push_back(real(
+        "beacons.r_bearing", "beacons.r_bearing", "variance of one beacon bearing, rad²",
+        [](auto& c) -> auto& { return c.lesson.beacons.r_bearing; }));
+    s.push_back(boolean(
+        "beacons.gate", "beacons.gate_enabled", "reject bearings whose NIS exceeds the χ²(1) gate",
+        [](auto& c) -> auto& { return c.lesson.beacons.gate_enabled; }));
+    s.push_back(real(
+        "beacons.gate_probability", "beacons.gate_probability",
+        "probability of the bearing gate, in (0, 1)",
+        [](auto& c) -> auto& { return c.lesson.beacons.gate_probability; }));
+
+    s.push_back(real(
+        "wheel_speed_kf.q_angle", "wheel_speed_kf.q_angle", "Q11 of each wheel's KF, °²",
+        [](auto& c) -> auto& { return c.lesson.wheel_speed.q_angle; }));
+    s.push_back(real(
+        "wheel_speed_kf.q_rate", "wheel_speed_kf.q_rate", "Q22 of each wheel's KF, (°/s)²",
+        [](auto& c) -> auto& { return c.lesson.wheel_speed.q_rate; }));
+    s.push_back(real(
+        "wheel_speed_kf.r_right", "wheel_speed_kf.r_right", "R of the right encoder, °²",
+        [](auto& c) -> auto& { return c.lesson.wheel_speed.r_right; }));
+    s.push_back(real(
+        "wheel_speed_kf.r_left", "wheel_speed_kf.r_left", "R of the left encoder, °²",
+        [](auto& c) -> auto& { return c.lesson.wheel_speed.r_left; }));
+    s.push_back(real(
+        "wheel_speed_kf.p0", "wheel_speed_kf.p0", "P0 = p0·I of each wheel's KF",
+        [](auto& c) -> auto& { return c.lesson.wheel_speed.p0; }));
+
+    s.push_back(real(
+        "velocity_kf.q_v", "velocity_kf.q_v", "Q11 of the (v, ω) KF, (m/s)² per period",
+        [](auto& c) -> auto& { return c.lesson.velocity.q_v; }));
+    s.push_back(real(
+        "velocity_kf.q_w", "velocity_kf.q_w", "Q22 of the (v, ω) KF, (rad/s)² per period",
+        [](auto& c) -> auto& { return c.lesson.velocity.q_w; }));
+    s.push_back(real(
+        "velocity_kf.r_v", "velocity_kf.r_v", "R11: variance of the encoder speed, (m/s)²",
+        [](auto& c) -> auto& { return c.lesson.velocity.r_v; }));
+    s.push_back(real(
+        "velocity_kf.r_w", "velocity_kf.r_w", "R22: variance of the encoder turn rate, (rad/s)²",
+        [](auto& c) -> auto& { return c.lesson.velocity.r_w; }));
+    s.push_back(real(
+        "velocity_kf.p0", "velocity_kf.p0", "P0 = p0·I of the (v, ω) KF",
+        [](auto& c) -> auto& { return c.lesson.velocity.p0; }));
+
+    s.push_back(real(
+        "gyro_fusion.q_position", "gyro_fusion.q_position",
+        "5-state EKF: Q of x and y per period, m²",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.q_position; }));
+    s.push_back(real(
+        "gyro_fusion.q_heading", "gyro_fusion.q_heading", "5-state EKF: Q of θ per period, rad²",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.q_heading; }));
+    s.push_back(real(
+        "gyro_fusion.q_v", "gyro_fusion.q_v", "5-state EKF: Q of v per period, (m/s)²",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.q_v; }));
+    s.push_back(real(
+        "gyro_fusion.q_w", "gyro_fusion.q_w", "5-state EKF: Q of ω per period, (rad/s)²",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.q_w; }));
+    s.push_back(real(
+        "gyro_fusion.r_v_encoders", "gyro_fusion.r_v_encoders",
+        "variance of the encoder speed, (m/s)²",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.r_v_encoders; }));
+    s.push_back(real(
+        "gyro_fusion.r_w_encoders", "gyro_fusion.r_w_encoders",
+        "variance of the encoder turn rate, (rad/s)²",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.r_w_encoders; }));
+    s.push_back(real(
+        "gyro_fusion.r_w_gyro", "gyro_fusion.r_w_gyro", "variance of the gyro rate, (rad/s)²",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.r_w_gyro; }));
+    s.push_back(boolean(
+        "gyro_fusion.use_gyro", "gyro_fusion.use_gyro", "false: encoders (and accelerometers) only",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.use_gyro; }));
+    s.push_back(boolean(
+        "gyro_fusion.use_accelerometers", "gyro_fusion.use_accelerometers",
+        "false: predict at constant velocity",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.use_accelerometers; }));
+
+    s.push_back(real(
+        "compass.k_d", "compass.k_d", "eq. 5: translation error coefficient k_D, m per m",
+        [](auto& c) -> auto& { return c.lesson.compass.k_d; }));
+    s.push_back(real(
+        "compass.k_dtheta", "compass.k_dtheta",
+        "eq. 5: rotation error per distance k_Dθ, rad² per m",
+        [](auto& c) -> auto& { return c.lesson.compass.k_dtheta; }));
+    s.push_back(real(
+        "compass.k_theta", "compass.k_theta", "eq. 5: rotation error per turn k_θ, rad² per rad",
+        [](auto& c) -> auto& { return c.lesson.compass.k_theta; }));
+    s.push_back(real(
+        "compass.r_compass", "compass.r_compass", "variance of the compass heading, rad²",
+        [](auto& c) -> auto& { return c.lesson.compass.r_compass; }));
+    s.push_back(boolean(
+        "compass.use_compass", "compass.use_compass", "false: odometry only (P still grows)",
+        [](auto& c) -> auto& { return c.lesson.compass.use_compass; }));
+
+    s.push_back(real(
+        "calibration.gyro_offset", "calibration.gyro_offset", "raw gyro value at rest, counts",
+        [](auto& c) -> auto& { return c.lesson.calibration.gyro_offset; }));
+    s.push_back(real(
+        "calibration.gyro_counts_per_dps", "calibration.gyro_counts_per_dps", "gyro counts per °/s",
+        [](auto& c) -> auto& { return c.lesson.calibration.gyro_counts_per_dps; }));
+    s.push_back(real(
+        "calibration.accel_counts_per_g", "calibration.accel_counts_per_g",
+        "accelerometer counts per g",
+        [](auto& c) -> auto& { return c.lesson.calibration.accel_counts_per_g; }));
+}
+
+// The simulated sensors of the further lessons (off unless enabled) and the displacement
+// event; validation names them "simulator.<sensor>.<name>".
+void add_simulated_sensor_settings(std::vector<Setting>& s) {
+    const auto sim_real = [&s](const std::string& key, std::string help, auto access) {
+        s.push_back(real(key, "simulator." + key, std::move(help), access));
+    };
+    const auto sim_bool = [&s](const std::string& key, std::string help, auto access) {
+        s.push_back(boolean(key, "simulator." + key, std::move(help), access));
+    };
+    sim_bool(
+        "beacon_scanner.enabled", "simulate the 360° bearing-only beacon scanner",
+        [](auto& c) -> auto& { return c.physical.beacon_scanner.enabled; });
+    sim_real(
+        "beacon_scanner.detection_probability",
+        "probability of seeing each beacon in line of sight per scan, 0 … 1",
+        [](auto& c) -> auto& { return c.physical.beacon_scanner.detection_probability; });
+    sim_real(
+        "beacon_scanner.bearing_noise", "σ of each bearing, rad",
+        [](auto& c) -> auto& { return c.physical.beacon_scanner.bearing_noise; });
+    sim_real(
+        "beacon_scanner.period", "s between scans",
+        [](auto& c) -> auto& { return c.physical.beacon_scanner.period; });
+    sim_bool(
+        "gyro.enabled", "simulate the single-axis gyroscope",
+        [](auto& c) -> auto& { return c.physical.gyro.enabled; });
+    sim_real(
+        "gyro.offset", "raw value at rest, counts",
+        [](auto& c) -> auto& { return c.physical.gyro.offset; });
+    sim_real(
+        "gyro.noise", "σ of the gyro's white noise, counts",
+        [](auto& c) -> auto& { return c.physical.gyro.noise; });
+    sim_real(
+        "gyro.bias_sigma", "σ of the gyro bias drawn at the start, counts",
+        [](auto& c) -> auto& { return c.physical.gyro.bias_sigma; });
+    sim_real(
+        "gyro.bias_drift", "random walk of the gyro bias, counts/√s",
+        [](auto& c) -> auto& { return c.physical.gyro.bias_drift; });
+    sim_bool(
+        "accelerometers.enabled", "simulate the two accelerometers over the wheels",
+        [](auto& c) -> auto& { return c.physical.accelerometers.enabled; });
+    sim_real(
+        "accelerometers.noise", "σ of each axis's white noise, counts",
+        [](auto& c) -> auto& { return c.physical.accelerometers.noise; });
+    sim_real(
+        "accelerometers.bias_sigma", "σ of each axis's constant bias, counts",
+        [](auto& c) -> auto& { return c.physical.accelerometers.bias_sigma; });
+    sim_bool(
+        "compass_sensor.enabled", "simulate the magnetic compass",
+        [](auto& c) -> auto& { return c.physical.compass.enabled; });
+    sim_real(
+        "compass_sensor.noise_deg", "σ of the compass noise before 1° rounding, °",
+        [](auto& c) -> auto& { return c.physical.compass.noise_deg; });
+    sim_bool(
+        "displacement.enabled", "move the robot suddenly once (the filter is not told)",
+        [](auto& c) -> auto& { return c.simulator.displacement.enabled; });
+    sim_real(
+        "displacement.time", "simulated time of the displacement, s",
+        [](auto& c) -> auto& { return c.simulator.displacement.time; });
+    sim_real(
+        "displacement.dx", "displacement along the world x axis, m",
+        [](auto& c) -> auto& { return c.simulator.displacement.dx; });
+    sim_real(
+        "displacement.dy", "displacement along the world y axis, m",
+        [](auto& c) -> auto& { return c.simulator.displacement.dy; });
+    s.push_back(degrees(
+        "displacement.dtheta_deg", "simulator.displacement.dtheta", "turn of the displacement, °",
+        [](auto& c) -> auto& { return c.simulator.displacement.dtheta; }));
+}
+
 const char* routine_name(RoutineSpec::Kind kind) {
     switch (kind) {
         case RoutineSpec::Kind::Square:
@@ -89,6 +303,12 @@ const char* routine_name(RoutineSpec::Kind kind) {
             return "goto";
         case RoutineSpec::Kind::Manual:
             return "manual";
+        case RoutineSpec::Kind::Shuttle:
+            return "shuttle";
+        case RoutineSpec::Kind::Piecewise:
+            return "piecewise";
+        case RoutineSpec::Kind::Random:
+            return "random";
     }
     return "square";
 }
@@ -165,6 +385,9 @@ std::vector<Setting> make_settings() {
         "filter.max_variance", "filter.max_variance", "ceiling on every variance of P",
         [](auto& c) -> auto& { return c.filter.limits.max_variance; }));
 
+    add_lesson_filter_settings(s);
+    add_simulated_sensor_settings(s);
+
     // [initial] — the belief the filter starts from.
     s.push_back(pose_part("initial.x", "initial.x", "believed start x, m (default: world start)",
                           &RunConfig::initial_pose, &PoseOverride::x));
@@ -184,14 +407,16 @@ std::vector<Setting> make_settings() {
         [](auto& c) -> auto& { return c.initial.var_theta; }));
 
     // [control] — the path-control routine.
-    Setting routine{"control.routine",
-                    "control.routine",
-                    "square, line, circle, goto or manual",
-                    SettingType::Choice,
-                    {"square", "line", "circle", "goto", "manual"},
-                    {},
-                    {},
-                    {}};
+    Setting routine{
+        "control.routine",
+        "control.routine",
+        "square, line, circle, goto, manual, shuttle (line back and forth), "
+        "piecewise (corners with stops) or random (random places)",
+        SettingType::Choice,
+        {"square", "line", "circle", "goto", "manual", "shuttle", "piecewise", "random"},
+        {},
+        {},
+        {}};
     routine.get = [](const RunConfig& c) -> SettingValue {
         return std::string(routine_name(c.routine.kind));
     };
@@ -199,13 +424,33 @@ std::vector<Setting> make_settings() {
         const std::string& name = std::get<std::string>(v);
         for (auto kind :
              {RoutineSpec::Kind::Square, RoutineSpec::Kind::Line, RoutineSpec::Kind::Circle,
-              RoutineSpec::Kind::Goto, RoutineSpec::Kind::Manual}) {
+              RoutineSpec::Kind::Goto, RoutineSpec::Kind::Manual, RoutineSpec::Kind::Shuttle,
+              RoutineSpec::Kind::Piecewise, RoutineSpec::Kind::Random}) {
             if (name == routine_name(kind)) {
                 c.routine.kind = kind;
             }
         }
     };
     s.push_back(routine);
+    s.push_back(real(
+        "control.pause", "controller.pause",
+        "shuttle/piecewise/random: seconds stopped at each waypoint",
+        [](auto& c) -> auto& { return c.routine.pause; }));
+    Setting random_points{"control.random_points",
+                          "control.random_points",
+                          "random: how many random places to visit (1 … 100)",
+                          SettingType::Integer,
+                          {},
+                          {},
+                          {},
+                          {}};
+    random_points.get = [](const RunConfig& c) -> SettingValue {
+        return std::int64_t{c.routine.random_points};
+    };
+    random_points.set = [](RunConfig& c, const SettingValue& v) {
+        c.routine.random_points = static_cast<int>(std::get<std::int64_t>(v));
+    };
+    s.push_back(random_points);
     s.push_back(real(
         "control.v_ref", "motion.v_ref", "V_ref: reference speed, m/s",
         [](auto& c) -> auto& { return c.motion.v_ref; }));

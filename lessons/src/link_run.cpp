@@ -95,7 +95,7 @@ RunResult run_with_link(const ResolvedRun& run, RobotLink& link, TruthSource& tr
         }
         if (last_truth) {
             if (truth_known(*last_truth)) {
-                metrics.add(snapshot, last_truth->pose);
+                metrics.add(snapshot, *last_truth);
             }
             if (observer != nullptr) {
                 observer->on_step(snapshot, *last_truth);

@@ -1,5 +1,6 @@
 #include "legofeup/lessons/run_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "legofeup/lessons/config_schema.hpp"
@@ -9,7 +10,8 @@
 namespace legofeup::lessons {
 namespace {
 
-constexpr double kSecondsPerLap = 200.0;  // a lap takes ~90 s; a lost robot gets twice that
+constexpr double kSecondsPerLap = 200.0;        // a lap takes ~90 s; a lost robot gets twice that
+constexpr double kRandomWaypointSpacing = 0.5;  // m between consecutive random places
 
 // A validation issue, pointed at the setting the user wrote and where they wrote it.
 InputProblem locate(const RunConfig& config, const ConfigIssue& issue) {
@@ -39,6 +41,26 @@ Controller make_controller(const RunConfig& config, const sim::WorldSpec& world)
             return GoXYTheta(routine.goto_target);
         case RoutineSpec::Kind::Manual:
             return ManualDrive{};
+        case RoutineSpec::Kind::Shuttle:
+            return VisitWaypoints({routine.line_to, routine.line_from}, routine.pause, config.laps);
+        case RoutineSpec::Kind::Piecewise: {
+            std::vector<Vector2> corners;
+            for (const PathSegment& segment : sim::world_square_path(world)) {
+                if (const auto* line = std::get_if<LineSegment>(&segment)) {
+                    corners.push_back(line->to);
+                }
+            }
+            return VisitWaypoints(std::move(corners), routine.pause, config.laps);
+        }
+        case RoutineSpec::Kind::Random: {
+            // Inside the square path (the arena's free floor), from the run's seed.
+            const Vector2 half = Vector2::Constant(0.5 * world.path_side);
+            const int count = std::clamp(routine.random_points, 1, 100);
+            return VisitWaypoints(
+                random_waypoints(config.seed, count, world.path_centre - half,
+                                 world.path_centre + half, kRandomWaypointSpacing),
+                routine.pause, 1);
+        }
     }
     return ManualDrive{};
 }
@@ -68,6 +90,7 @@ ResolvedRun resolve(const RunConfig& config) {
     std::vector<ConfigIssue> issues;
     ConfigChecker check(issues);
     check.in_range_or_zero("duration", config.duration, 1.0, 1e6);
+    check.in_range("control.random_points", config.routine.random_points, 1.0, 100.0);
     check.in_range("robot.wheel_diameter", config.robot.wheel_diameter, 0.005, 1.0);
     check.in_range("robot.counts_per_turn", config.robot.counts_per_turn, 1.0, 1e6);
     check.in_range_or_zero("odometry.codo_right", config.robot.codo_right, 1.0, 1e6);
@@ -86,6 +109,9 @@ ResolvedRun resolve(const RunConfig& config) {
     loop.walls = WallMap(run.world.walls);
     loop.association = config.association;
     loop.filter = config.filter;
+    loop.lesson = config.lesson;
+    loop.beacons = run.world.beacons;  // the filter's beacon map is the world's
+    loop.control_period = config.simulator.control_period;
     loop.initial = config.initial;
     loop.initial.pose = config.initial_pose.applied_to(run.world.start);
     loop.motion = config.motion;

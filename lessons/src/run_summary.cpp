@@ -30,6 +30,15 @@ nlohmann::json config_to_json(const RunConfig& config) {
     return json;
 }
 
+namespace {
+
+/// a / b, or 0 when b is 0 (nothing to compare with).
+double ratio(double a, double b) {
+    return b > 0.0 ? a / b : 0.0;
+}
+
+}  // namespace
+
 nlohmann::json metrics_to_json(const RunMetrics& m) {
     nlohmann::json association = nlohmann::json::object();
     for (int i = 0; i < kAssociationOutcomeCount; ++i) {
@@ -58,6 +67,32 @@ nlohmann::json metrics_to_json(const RunMetrics& m) {
         {"nees_95_bounds", {m.nees_bounds.lower, m.nees_bounds.upper}},
         {"nees_inside_fraction", m.nees_inside_fraction},
         {"mean_nis", m.mean_nis},
+        {"rms_odometry_heading_error_rad", m.rms_odometry_heading_error},
+        {"max_odometry_heading_error_rad", m.max_odometry_heading_error},
+        {"final_odometry_heading_error_rad", m.final_odometry_heading_error},
+        {"beacon_bearings", m.beacon_bearings},
+        {"beacon_updates_applied", m.beacon_updates_applied},
+        {"mean_beacon_nis", m.mean_beacon_nis},
+        {"rms_wheel_speed_error_kf_mps", m.rms_wheel_speed_error_kf},
+        {"rms_wheel_speed_error_differentiated_mps", m.rms_wheel_speed_error_differentiated},
+        {"rms_velocity_error_kf_mps", m.rms_velocity_error_kf},
+        {"rms_velocity_error_encoders_mps", m.rms_velocity_error_encoders},
+        {"rms_turn_rate_error_kf_radps", m.rms_turn_rate_error_kf},
+        {"rms_turn_rate_error_encoders_radps", m.rms_turn_rate_error_encoders},
+        {"rms_compass_heading_error_rad", m.rms_compass_heading_error},
+        {"final_gyro_heading_error_rad", m.final_gyro_heading_error},
+        {"shadow_rms_position_error_m", m.shadow_rms_position_error},
+        {"shadow_final_position_error_m", m.shadow_final_position_error},
+        {"shadow_rms_heading_error_rad", m.shadow_rms_heading_error},
+        {"shadow_mean_nees", m.shadow_mean_nees},
+        // Ratios for the lessons' comparisons (below 1: the first is better).
+        {"wheel_speed_error_ratio",
+         ratio(m.rms_wheel_speed_error_kf, m.rms_wheel_speed_error_differentiated)},
+        {"velocity_error_ratio", ratio(m.rms_velocity_error_kf, m.rms_velocity_error_encoders)},
+        {"turn_rate_error_ratio", ratio(m.rms_turn_rate_error_kf, m.rms_turn_rate_error_encoders)},
+        {"heading_error_to_odometry_ratio",
+         ratio(m.rms_heading_error, m.rms_odometry_heading_error)},
+        {"shadow_position_error_ratio", ratio(m.shadow_rms_position_error, m.rms_position_error)},
     };
 }
 
@@ -66,6 +101,14 @@ nlohmann::json result_metrics_to_json(const RunResult& result) {
     metrics["wall_time_s"] = result.wall_seconds;
     metrics["real_time_factor"] =
         result.wall_seconds > 0.0 ? result.metrics.duration / result.wall_seconds : 0.0;
+    // Cost per step of the pose filter and of its shadow (machine-dependent, like wall time).
+    const RunMetrics& m = result.metrics;
+    metrics["mean_filter_us"] = m.mean_filter_microseconds;
+    metrics["mean_shadow_filter_us"] = m.mean_shadow_filter_microseconds;
+    metrics["shadow_to_filter_cost_ratio"] =
+        m.mean_filter_microseconds > 0.0
+            ? m.mean_shadow_filter_microseconds / m.mean_filter_microseconds
+            : 0.0;
     metrics["routine_finished"] = result.routine_finished;
     metrics["frames_missing"] = result.frames_missing;
     metrics["steps_without_truth"] = result.steps_without_truth;
@@ -73,7 +116,8 @@ nlohmann::json result_metrics_to_json(const RunResult& result) {
 }
 
 bool is_machine_dependent_metric(std::string_view name) {
-    return name == "wall_time_s" || name == "real_time_factor";
+    return name == "wall_time_s" || name == "real_time_factor" || name == "mean_filter_us"
+           || name == "mean_shadow_filter_us" || name == "shadow_to_filter_cost_ratio";
 }
 
 nlohmann::json run_summary(const ResolvedRun& run, const RunResult& result,

@@ -21,12 +21,77 @@ void number(std::ostream& out, double value) {
     out << ',';
 }
 
+/// `value` when `present`, else an empty cell.
+void number_if(std::ostream& out, bool present, double value) {
+    number(out, present ? value : kNone);
+}
+
+/// The further lessons' columns (after frame_missing): what the optional sensors read, the
+/// speed estimates of paper 003, the comparison filter and the truths they are judged by.
+/// Empty cells where the lesson has no such sensor or estimate. Ends the row.
+void further_lesson_cells(std::ostream& out, const LoopSnapshot& s, const GroundTruth& truth) {
+    out << to_string(s.localisation) << ',' << to_string(s.filter_kind) << ',';
+    const bool scan = !s.frame_missing && s.frame.has_beacon_scan;
+    if (scan) {
+        int applied = 0;
+        for (std::size_t k = 0; k < s.beacons.count && k < s.beacons.updates.size(); ++k) {
+            applied += s.beacons.updates[k].status == StepStatus::Applied ? 1 : 0;
+        }
+        out << static_cast<int>(s.frame.beacons.count) << ',' << applied << ',';
+    } else {
+        out << ",,";
+    }
+    const ExtraReadings& r = s.readings;
+    number_if(out, r.has_gyro, r.gyro_rate);
+    number_if(out, r.has_gyro, r.gyro_heading);
+    number_if(out, r.has_compass, r.compass_heading);
+    number_if(out, r.has_accelerometers, r.accel_forward[kAccelRightWheel]);
+    number_if(out, r.has_accelerometers, r.accel_forward[kAccelLeftWheel]);
+    const SpeedEstimates& v = s.speeds;
+    number_if(out, v.valid, v.wheel_kf[0]);
+    number_if(out, v.valid, v.wheel_kf[1]);
+    number_if(out, v.valid, v.wheel_differentiated[0]);
+    number_if(out, v.valid, v.wheel_differentiated[1]);
+    number_if(out, v.valid, v.body_encoders.v);
+    number_if(out, v.valid, v.body_encoders.w);
+    number_if(out, v.valid && v.body_kf_valid, v.body_kf.v);
+    number_if(out, v.valid && v.body_kf_valid, v.body_kf.w);
+    const bool fused = s.localisation == Localisation::GyroFusion;
+    number_if(out, fused, s.fused_velocity.v);
+    number_if(out, fused, s.fused_velocity.w);
+    const ShadowEstimate& shadow = s.shadow;
+    out << (shadow.active ? to_string(shadow.kind) : "") << ',';
+    for (const double value : {shadow.estimate(kX), shadow.estimate(kY), shadow.estimate(kTheta),
+                               shadow.covariance(kX, kX), shadow.covariance(kY, kY),
+                               shadow.covariance(kTheta, kTheta)}) {
+        number_if(out, shadow.active, value);
+    }
+    number(out, truth.velocity.v);
+    number(out, truth.velocity.w);
+    number(out, truth.wheel_surface_speeds.right);
+    // The last cell: no comma after it. (The gyro bias and magnetic disturbance of the truth
+    // are not written: the UDP truth stream does not carry them, and a trace must not depend
+    // on the link it came over.)
+    if (std::isfinite(truth.wheel_surface_speeds.left)) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.9g", truth.wheel_surface_speeds.left);
+        out << text;
+    }
+    out << '\n';
+}
+
 }  // namespace
 
 const char* trace_csv_header() {
     return "t,x_true,y_true,th_true,x_est,y_est,th_est,pxx,pxy,pxt,pyy,pyt,ptt,"
            "x_odo,y_odo,th_odo,ds1,ds2,v1,v2,wall,nis,nees,"
-           "adc1,adc2,association,update,touching_wall,frame_missing";
+           "adc1,adc2,association,update,touching_wall,frame_missing,"
+           // The further lessons (docs/experiments.md, "trace.csv columns").
+           "localisation,filter,beacon_sightings,beacon_updates,"
+           "gyro_rate,gyro_heading,compass_heading,accel_right,accel_left,"
+           "wheel_kf_right,wheel_kf_left,wheel_diff_right,wheel_diff_left,v_enc,w_enc,v_kf,w_kf,"
+           "v_fused,w_fused,shadow_filter,shadow_x,shadow_y,shadow_theta,shadow_pxx,shadow_pyy,"
+           "shadow_ptt,v_true,w_true,wheel_right_true,wheel_left_true";
 }
 
 TraceCsvWriter::TraceCsvWriter(std::ostream& out, const LoopConfig& loop) : out_(out), loop_(loop) {
@@ -63,7 +128,8 @@ void TraceCsvWriter::on_step(const LoopSnapshot& s, const GroundTruth& truth) {
     number(out_, normalized_estimation_error(to_state(truth.pose), s.estimate, s.covariance));
     out_ << s.ir[0].adc << ',' << s.ir[1].adc << ',' << to_string(s.association.outcome) << ','
          << to_string(s.update.status) << ',' << (truth.touching_wall ? 1 : 0) << ','
-         << (s.frame_missing ? 1 : 0) << '\n';
+         << (s.frame_missing ? 1 : 0) << ',';
+    further_lesson_cells(out_, s, truth);
 }
 
 }  // namespace legofeup::lessons

@@ -1,6 +1,9 @@
 #include "legofeup/lessons/world_file.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
 
 #include "config_reader.hpp"
 #include "legofeup/core/angles.hpp"
@@ -33,10 +36,17 @@ class WorldReader {
                 read_path(node, world);
             } else if (name == "wall") {
                 read_walls(node, world.walls);
+            } else if (name == "beacon") {
+                read_beacons(node, world.beacons);
+            } else if (name == "magnetic") {
+                read_magnetic(node, world.magnetic);
             } else {
-                problem(node, name, "unknown key (expected name, [start], [path] or [[wall]])");
+                problem(node, name,
+                        "unknown key (expected name, [start], [path], [[wall]], [[beacon]] or "
+                        "[magnetic])");
             }
         }
+        check_beacons_inside_walls(world);
         return world;
     }
 
@@ -151,8 +161,111 @@ class WorldReader {
         }
     }
 
+    // [[beacon]] id = 1  x = ..  y = ..: ids whole numbers 0–255, unique.
+    void read_beacons(const toml::node& node, BeaconMap& beacons) {
+        const auto* array = node.as_array();
+        if (array == nullptr || !array->is_array_of_tables()) {
+            problem(node, "beacon", "beacons are written as [[beacon]] tables");
+            return;
+        }
+        std::map<std::int64_t, std::size_t> first_with_id;
+        for (const auto& entry : *array) {
+            const std::size_t index = beacon_entries_.size();
+            const std::string prefix = "beacon[" + std::to_string(index) + "]";
+            Beacon beacon;
+            bool has_id = false;
+            bool has_x = false;
+            bool has_y = false;
+            for (const auto& [key, value] : *entry.as_table()) {
+                const std::string name = prefix + "." + std::string(key.str());
+                if (key == "id") {
+                    has_id = true;
+                    const auto* id = value.as_integer();
+                    if (id == nullptr || id->get() < 0 || id->get() > 255) {
+                        problem(value, name, "must be a whole number from 0 to 255");
+                        continue;
+                    }
+                    const auto [first, inserted] = first_with_id.emplace(id->get(), index);
+                    if (!inserted) {
+                        problem(value, name,
+                                "beacon[" + std::to_string(first->second)
+                                    + "] already has this id: ids must be unique");
+                    }
+                    beacon.id = static_cast<int>(id->get());
+                } else if (key == "x") {
+                    has_x = true;
+                    beacon.position.x() = finite_number(value, name).value_or(0.0);
+                } else if (key == "y") {
+                    has_y = true;
+                    beacon.position.y() = finite_number(value, name).value_or(0.0);
+                } else {
+                    problem(value, name, "unknown key (expected id, x or y)");
+                }
+            }
+            if (!has_id || !has_x || !has_y) {
+                problem(entry, prefix, "a beacon needs `id`, `x` and `y`");
+            }
+            beacons.push_back(beacon);
+            beacon_entries_.push_back(&entry);
+        }
+    }
+
+    // Beacons stand inside the world: within the bounding box of its walls (when it has any).
+    void check_beacons_inside_walls(const sim::WorldSpec& world) {
+        if (world.walls.empty()) {
+            return;
+        }
+        Vector2 low = world.walls.front().start;
+        Vector2 high = low;
+        for (const Wall& wall : world.walls) {
+            low = low.cwiseMin(wall.start).cwiseMin(wall.end);
+            high = high.cwiseMax(wall.start).cwiseMax(wall.end);
+        }
+        for (std::size_t i = 0; i < world.beacons.size(); ++i) {
+            const Vector2& at = world.beacons[i].position;
+            if ((at.array() < low.array()).any() || (at.array() > high.array()).any()) {
+                problem(
+                    *beacon_entries_[i], "beacon[" + std::to_string(i) + "]",
+                    "(" + format_config_number(at.x()) + ", " + format_config_number(at.y())
+                        + ") is outside the walls' bounding box x " + format_config_number(low.x())
+                        + " to " + format_config_number(high.x()) + ", y "
+                        + format_config_number(low.y()) + " to " + format_config_number(high.y()));
+            }
+        }
+    }
+
+    // [magnetic] amplitude_deg = ..  wavelength = ..
+    void read_magnetic(const toml::node& node, sim::MagneticDisturbance& magnetic) {
+        const auto* table = node.as_table();
+        if (table == nullptr) {
+            problem(node, "magnetic", "must be a table with amplitude_deg and wavelength");
+            return;
+        }
+        for (const auto& [key, value] : *table) {
+            const std::string name = "magnetic." + std::string(key.str());
+            if (key == "amplitude_deg") {
+                const auto amplitude = finite_number(value, name);
+                if (amplitude && !(*amplitude >= 0.0 && *amplitude <= 180.0)) {
+                    problem(value, name, "must be between 0 and 180 degrees");
+                } else if (amplitude) {
+                    magnetic.amplitude_deg = *amplitude;
+                }
+            } else if (key == "wavelength") {
+                const auto wavelength = finite_number(value, name);
+                if (wavelength && !(*wavelength > 0.0 && *wavelength <= 1e6)) {
+                    problem(value, name, "must be greater than 0 and at most 1e6 m");
+                } else if (wavelength) {
+                    magnetic.wavelength = *wavelength;
+                }
+            } else {
+                problem(value, name, "unknown key (expected amplitude_deg or wavelength)");
+            }
+        }
+    }
+
     std::string source_;
     std::vector<InputProblem> problems_;
+    std::vector<const toml::node*> beacon_entries_;  // where each beacon was written
 };
 
 }  // namespace

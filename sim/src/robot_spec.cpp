@@ -38,7 +38,11 @@ std::vector<ConfigIssue> validate(const RobotSpec& robot) {
     check("ir_period", robot.ir_period, 0.001, 1.0);
     check("ir_ray_length", robot.ir_ray_length, 0.05, 10.0);
     for (auto&& more : {validate(robot.ir_mount, "simulator.ir_mount"),
-                        validate(robot.ir_curve, "simulator.ir_curve")}) {
+                        validate(robot.ir_curve, "simulator.ir_curve"),
+                        validate(robot.beacon_scanner, "simulator.beacon_scanner"),
+                        validate(robot.gyro, "simulator.gyro"),
+                        validate(robot.accelerometers, "simulator.accelerometers"),
+                        validate(robot.compass, "simulator.compass")}) {
         issues.insert(issues.end(), more.begin(), more.end());
     }
     return issues;

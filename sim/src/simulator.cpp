@@ -2,13 +2,16 @@
 
 #include <box2d/box2d.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 
 #include "box2d_convert.hpp"
 #include "drive_train.hpp"
+#include "extra_sensors.hpp"
 #include "ir_ray.hpp"
+#include "legofeup/core/angles.hpp"
 #include "noise_streams.hpp"
 
 namespace legofeup::sim {
@@ -16,6 +19,13 @@ namespace {
 
 constexpr int kVelocityIterations = 6;
 constexpr int kPositionIterations = 2;
+constexpr double kTimeTolerance = 1e-9;  // s, when comparing accumulated sample times
+
+BeaconMap sorted_by_id(BeaconMap beacons) {
+    std::stable_sort(beacons.begin(), beacons.end(),
+                     [](const Beacon& a, const Beacon& b) { return a.id < b.id; });
+    return beacons;
+}
 
 }  // namespace
 
@@ -28,6 +38,11 @@ std::vector<ConfigIssue> validate(const SimulatorSettings& settings) {
                       && std::abs(steps - std::round(steps)) <= 1e-9 && std::round(steps) >= 1.0,
                   "simulator.control_period", settings.control_period,
                   "must be a whole number of physics steps, at most 1 s");
+    const auto& event = settings.displacement;
+    check.in_range("simulator.displacement.time", event.time, 0.0, 1e7);
+    check.in_range("simulator.displacement.dx", event.dx, -1000.0, 1000.0);
+    check.in_range("simulator.displacement.dy", event.dy, -1000.0, 1000.0);
+    check.in_range("simulator.displacement.dtheta", event.dtheta, -2.0 * kPi, 2.0 * kPi);
     return issues;
 }
 
@@ -35,18 +50,23 @@ struct Simulator::State {
     WorldSpec world;
     RobotSpec robot;
     SimulatorSettings settings;
+    BeaconMap beacons_by_id;  // the world's beacons in the order the scanner reports them
     double dt = 0.01;
     int steps_per_period = 5;
 
     b2World physics{b2Vec2(0.0f, 0.0f)};
     b2Body* chassis = nullptr;
     DriveTrain drive_train;
+    ExtraSensors extra;
 
     std::uint64_t step_count = 0;
     std::uint32_t sequence = 0;
     double next_ir_time = 0.0;
     std::array<std::uint16_t, 2> ir_adc{};
     std::array<double, 2> ir_distances{};
+    double next_motion_sample_time = 0.0;  // gyroscope, accelerometers, compass
+    double next_scan_time = 0.0;
+    bool displaced = false;  // the displacement event has happened
 
     GaussianStream ir_front_noise{0, NoiseStream::IrFront};
     GaussianStream ir_rear_noise{0, NoiseStream::IrRear};
@@ -54,7 +74,12 @@ struct Simulator::State {
     GaussianStream slip_left{0, NoiseStream::SlipLeft};
 
     State(WorldSpec w, RobotSpec r, SimulatorSettings s)
-        : world(std::move(w)), robot(std::move(r)), settings(s), drive_train(robot) {
+        : world(std::move(w)),
+          robot(std::move(r)),
+          settings(s),
+          beacons_by_id(sorted_by_id(world.beacons)),
+          drive_train(robot),
+          extra(0, robot) {
         dt = 1.0 / settings.physics_rate;
         steps_per_period =
             static_cast<int>(std::lround(settings.control_period * settings.physics_rate));
@@ -147,28 +172,55 @@ struct Simulator::State {
             sample_ir();
             next_ir_time += robot.ir_period;
         }
+        const MountMotion before = ExtraSensors::mount_motion(*chassis, robot);
         drive_train.drive(*chassis, dt, slip_right, slip_left);
         physics.Step(static_cast<float>(dt), kVelocityIterations, kPositionIterations);
         ++step_count;
+        extra.accumulate(before, ExtraSensors::mount_motion(*chassis, robot), dt);
+        sample_extra_sensors();
+    }
+
+    // The further lessons' sensors sample at the end of a physics step: the motion sensors
+    // once per control period, the beacon scanner once per scan period.
+    void sample_extra_sensors() {
+        const double now = time();
+        if (now + kTimeTolerance >= next_motion_sample_time) {
+            extra.sample_motion_sensors(robot, world, *chassis, now);
+            while (next_motion_sample_time <= now + kTimeTolerance) {
+                next_motion_sample_time += settings.control_period;
+            }
+        }
+        if (now + kTimeTolerance >= next_scan_time) {
+            extra.scan_beacons(robot, beacons_by_id, physics, *chassis, now);
+            while (next_scan_time <= now + kTimeTolerance) {
+                next_scan_time += robot.beacon_scanner.period;
+            }
+        }
     }
 
     void restart(const Pose2& start, std::uint64_t seed) {
         build_chassis(start);
         drive_train = DriveTrain(robot);
         reseed(seed);
+        extra = ExtraSensors(seed, robot);
         step_count = 0;
         sequence = 0;
         next_ir_time = 0.0;
         sample_ir();
         next_ir_time = robot.ir_period;
+        next_motion_sample_time = 0.0;
+        next_scan_time = 0.0;
+        sample_extra_sensors();
+        displaced = false;
     }
 };
 
 Simulator::Simulator(WorldSpec world, RobotSpec robot, SimulatorSettings settings,
                      std::uint64_t seed) {
-    auto issues = validate(robot);
-    const auto more = validate(settings);
-    issues.insert(issues.end(), more.begin(), more.end());
+    auto issues = validate(world);
+    for (auto&& more : {validate(robot), validate(settings)}) {
+        issues.insert(issues.end(), more.begin(), more.end());
+    }
     if (!issues.empty()) {
         throw invalid_configuration("simulator", issues);
     }
@@ -207,6 +259,14 @@ void Simulator::step_physics() {
 }
 
 void Simulator::step_control_period() {
+    State& state = *state_;
+    const auto& event = state.settings.displacement;
+    if (event.enabled && !state.displaced
+        && state.time() + state.settings.control_period + kTimeTolerance >= event.time) {
+        const GroundTruth now = ground_truth();
+        teleport({now.pose.x + event.dx, now.pose.y + event.dy, now.pose.theta + event.dtheta});
+        state.displaced = true;
+    }
     for (int i = 0; i < state_->steps_per_period; ++i) {
         state_->step();
     }
@@ -221,6 +281,7 @@ SensorFrame Simulator::sensor_frame() const {
     frame.encoder_counts = {static_cast<std::int32_t>(std::floor(degrees[0])),
                             static_cast<std::int32_t>(std::floor(degrees[1]))};
     frame.ir_adc = state_->ir_adc;
+    state_->extra.fill(frame, state_->robot, state_->settings.control_period);
     return frame;
 }
 
@@ -238,6 +299,11 @@ GroundTruth Simulator::ground_truth() const {
         truth.touching_wall = truth.touching_wall || edge->contact->IsTouching();
     }
     truth.ir_distances = state_->ir_distances;
+    const GyroSpec& gyro = state_->robot.gyro;
+    truth.gyro_bias_rate =
+        gyro.enabled ? degrees_to_radians(state_->extra.gyro_bias() / gyro.counts_per_dps) : 0.0;
+    truth.magnetic_disturbance =
+        degrees_to_radians(magnetic_disturbance_deg(state_->world.magnetic, position));
     return truth;
 }
 

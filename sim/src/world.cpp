@@ -1,6 +1,15 @@
 #include "legofeup/sim/world.hpp"
 
+#include <cmath>
+#include <set>
+#include <string>
+
 namespace legofeup::sim {
+namespace {
+
+constexpr double kStandardBeaconInset = 0.1;  // m from each corner of the walls' bounding box
+
+}  // namespace
 
 WorldSpec standard_arena() {
     const ArenaSpec arena;  // L_p = 2 m, L_w = 1.21 m, 1 m walls
@@ -9,7 +18,33 @@ WorldSpec standard_arena() {
     world.walls = standard_arena_walls(arena).walls();
     world.start = {-0.5 * arena.path_side, -0.5 * arena.path_side, 0.0};
     world.path_side = arena.path_side;
+    // Beacons 0.1 m inside the corners of the walls' bounding box (±L_w), CCW from the
+    // lower left: inside the walls, so the walls never hide one from the path.
+    const double corner = arena.wall_distance - kStandardBeaconInset;
+    world.beacons = {{1, {-corner, -corner}},
+                     {2, {corner, -corner}},
+                     {3, {corner, corner}},
+                     {4, {-corner, corner}}};
+    world.magnetic = {12.0, 3.0};
     return world;
+}
+
+std::vector<ConfigIssue> validate(const WorldSpec& world) {
+    std::vector<ConfigIssue> issues;
+    ConfigChecker check(issues);
+    std::set<int> ids;
+    for (std::size_t i = 0; i < world.beacons.size(); ++i) {
+        const Beacon& beacon = world.beacons[i];
+        const std::string name = "world.beacon[" + std::to_string(i) + "]";
+        check.in_range(name + ".id", beacon.id, 0.0, 255.0);
+        check.require(ids.insert(beacon.id).second, name + ".id", beacon.id,
+                      "another beacon has this id");
+        check.finite(name + ".x", beacon.position.x());
+        check.finite(name + ".y", beacon.position.y());
+    }
+    check.in_range("world.magnetic.amplitude_deg", world.magnetic.amplitude_deg, 0.0, 180.0);
+    check.positive("world.magnetic.wavelength", world.magnetic.wavelength, 1e6);
+    return issues;
 }
 
 std::vector<PathSegment> world_square_path(const WorldSpec& world) {

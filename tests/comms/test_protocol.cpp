@@ -138,6 +138,22 @@ FramePacket sample_frame() {
     return packet;
 }
 
+/// A frame with the extension block: every optional sensor, two beacon sightings (79 bytes).
+FramePacket sample_extended_frame() {
+    FramePacket packet = sample_frame();
+    packet.frame.has_gyro = true;
+    packet.frame.gyro_raw = -17;
+    packet.frame.has_accelerometers = true;
+    packet.frame.accel_raw = {{{12, -200}, {-7, 201}}};
+    packet.frame.has_compass = true;
+    packet.frame.compass_deg = 271;
+    packet.frame.has_beacon_scan = true;
+    packet.frame.beacons.count = 2;
+    packet.frame.beacons.sightings[0] = {1, 0.75};
+    packet.frame.beacons.sightings[1] = {4, -2.5};
+    return packet;
+}
+
 CommandPacket sample_command() {
     return {451, 22.45, {0.148, -0.052}};
 }
@@ -244,6 +260,7 @@ struct Sample {
 std::vector<Sample> valid_samples() {
     std::vector<Sample> samples{
         {PacketType::SensorFrame, encode(sample_frame())},
+        {PacketType::SensorFrame, encode(sample_extended_frame())},
         {PacketType::WheelCommand, encode(sample_command())},
         {PacketType::ConnectReply, encode(sample_connect_reply())},
         {PacketType::GroundTruth, encode(sample_truth())},
@@ -304,6 +321,14 @@ void expect_equal(const FramePacket& actual, const FramePacket& expected) {
     EXPECT_EQ(actual.frame.encoder_counts, expected.frame.encoder_counts);
     EXPECT_EQ(actual.frame.ir_adc, expected.frame.ir_adc);
     EXPECT_EQ(actual.frame.ir_valid, expected.frame.ir_valid);
+    EXPECT_EQ(actual.frame.has_gyro, expected.frame.has_gyro);
+    EXPECT_EQ(actual.frame.gyro_raw, expected.frame.gyro_raw);
+    EXPECT_EQ(actual.frame.has_accelerometers, expected.frame.has_accelerometers);
+    EXPECT_EQ(actual.frame.accel_raw, expected.frame.accel_raw);
+    EXPECT_EQ(actual.frame.has_compass, expected.frame.has_compass);
+    EXPECT_EQ(actual.frame.compass_deg, expected.frame.compass_deg);
+    EXPECT_EQ(actual.frame.has_beacon_scan, expected.frame.has_beacon_scan);
+    EXPECT_EQ(actual.frame.beacons, expected.frame.beacons);
     EXPECT_EQ(actual.flags.watchdog_stopped, expected.flags.watchdog_stopped);
     EXPECT_EQ(actual.flags.paused, expected.flags.paused);
     EXPECT_EQ(actual.flags.reset, expected.flags.reset);
@@ -1596,7 +1621,7 @@ TEST(ProtocolRobustness, RandomDatagramsNeverDecodeWithTheWrongSize) {
         PacketHeader header;
         const DecodeError header_error = decode_header(datagram, header);
         const bool right_size = bytes.size() >= kHeaderSize
-                                && bytes.size() == packet_size(static_cast<PacketType>(bytes[5]));
+                                && is_valid_length(static_cast<PacketType>(bytes[5]), bytes.size());
         if (header_error == DecodeError::None) {
             ASSERT_TRUE(right_size) << hex(bytes);
         }

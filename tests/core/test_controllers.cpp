@@ -213,14 +213,14 @@ TEST(Controller, ManualDriveIsLimitedAndReportsItsKind) {
     Controller controller = ManualDrive{};
     std::get<ManualDrive>(controller).set_command({0.5, -3.0});
     ControllerStatus status;
-    const ControlOutput out = run_controller(controller, {}, kLimits, kGains, status);
+    const ControlOutput out = run_controller(controller, {}, kLimits, kGains, kPeriod, status);
     EXPECT_EQ(out.command.v, kLimits.v_ref);
     EXPECT_EQ(out.command.w, -kLimits.w_ref);
     EXPECT_EQ(status.kind, ControllerKind::Manual);
     EXPECT_EQ(status.segment, -1);
 
     Controller path = FollowPath(square_path(ArenaSpec{}), 0);
-    run_controller(path, {-1.0, -1.0, 0.0}, kLimits, kGains, status);
+    run_controller(path, {-1.0, -1.0, 0.0}, kLimits, kGains, kPeriod, status);
     EXPECT_EQ(status.kind, ControllerKind::FollowPath);
     EXPECT_EQ(status.segment, 0);
     EXPECT_STREQ(to_string(kind_of(Controller{GoXYTheta({})})), "GoXYTheta");

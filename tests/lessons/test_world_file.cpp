@@ -24,6 +24,113 @@ TEST(WorldFile, TheShippedStandardArenaIsThePapersArena) {
         EXPECT_NEAR((file.walls[i].start - built_in.walls[i].start).norm(), 0.0, 1e-12);
         EXPECT_NEAR((file.walls[i].end - built_in.walls[i].end).norm(), 0.0, 1e-12);
     }
+    ASSERT_EQ(file.beacons.size(), 4u);
+    ASSERT_EQ(file.beacons.size(), built_in.beacons.size());
+    for (std::size_t i = 0; i < file.beacons.size(); ++i) {
+        EXPECT_EQ(file.beacons[i].id, built_in.beacons[i].id);
+        EXPECT_EQ(file.beacons[i].id, static_cast<int>(i) + 1);
+        EXPECT_NEAR((file.beacons[i].position - built_in.beacons[i].position).norm(), 0.0, 1e-12);
+        // 0.1 m inside a corner of the walls' bounding box (±1.21 m).
+        EXPECT_NEAR(file.beacons[i].position.cwiseAbs().maxCoeff(), 1.11, 1e-12);
+        EXPECT_NEAR(file.beacons[i].position.cwiseAbs().minCoeff(), 1.11, 1e-12);
+    }
+    EXPECT_EQ(file.magnetic.amplitude_deg, built_in.magnetic.amplitude_deg);
+    EXPECT_EQ(file.magnetic.amplitude_deg, 12.0);
+    EXPECT_EQ(file.magnetic.wavelength, built_in.magnetic.wavelength);
+    EXPECT_EQ(built_in_world().beacons.size(), 4u);
+    EXPECT_EQ(built_in_world().magnetic.amplitude_deg, 12.0);
+}
+
+TEST(WorldFile, ParsesBeaconsAndTheMagneticDisturbance) {
+    const sim::WorldSpec world = parse_world(R"(
+[[wall]]
+from = [-2, -1]
+to = [2, 1]
+[[beacon]]
+id = 7
+x = 1.5
+y = -0.25
+[[beacon]]
+id = 0
+x = -2
+y = 1
+[magnetic]
+amplitude_deg = 8.5
+wavelength = 2
+)",
+                                             "beacons.toml");
+    ASSERT_EQ(world.beacons.size(), 2u);
+    EXPECT_EQ(world.beacons[0].id, 7);
+    EXPECT_EQ(world.beacons[0].position, Vector2(1.5, -0.25));
+    EXPECT_EQ(world.beacons[1].id, 0);
+    EXPECT_EQ(world.beacons[1].position, Vector2(-2.0, 1.0));  // on the bounding box: inside
+    EXPECT_EQ(world.magnetic.amplitude_deg, 8.5);
+    EXPECT_EQ(world.magnetic.wavelength, 2.0);
+
+    const sim::WorldSpec plain = parse_world("name = \"plain\"\n", "plain.toml");
+    EXPECT_TRUE(plain.beacons.empty());
+    EXPECT_EQ(plain.magnetic.amplitude_deg, 0.0);
+}
+
+TEST(WorldFile, ReportsBeaconAndMagneticProblemsWithTheirLines) {
+    try {
+        parse_world(R"([[wall]]
+from = [-1, -1]
+to = [1, 1]
+[[beacon]]
+id = 3
+x = 0
+y = 0
+[[beacon]]
+id = 3
+x = 0.5
+y = 0.5
+[[beacon]]
+id = 256
+x = 0
+y = 0
+[[beacon]]
+id = 1.5
+x = 0
+y = 0
+colour = "red"
+[[beacon]]
+id = 4
+x = 1.5
+y = 0
+[[beacon]]
+id = 5
+x = 0
+[magnetic]
+amplitude_deg = -3
+wavelength = 0
+)",
+                    "bad.toml");
+        FAIL();
+    } catch (const InputError& error) {
+        std::vector<std::string> messages;
+        for (const auto& problem : error.problems()) {
+            messages.push_back(problem.message());
+        }
+        ASSERT_EQ(messages.size(), 8u);
+        EXPECT_EQ(
+            messages[0],
+            "bad.toml:9: beacon[1].id = 3: beacon[0] already has this id: ids must be unique");
+        EXPECT_EQ(messages[1],
+                  "bad.toml:13: beacon[2].id = 256: must be a whole number from 0 to 255");
+        EXPECT_EQ(messages[2],
+                  "bad.toml:17: beacon[3].id = 1.5: must be a whole number from 0 to 255");
+        EXPECT_EQ(messages[3],
+                  "bad.toml:20: beacon[3].colour = \"red\": unknown key (expected id, x or y)");
+        EXPECT_EQ(messages[4],
+                  "bad.toml:21: beacon[4]: (1.5, 0) is outside the walls' bounding box x -1 to 1, "
+                  "y -1 to 1");
+        EXPECT_EQ(messages[5], "bad.toml:25: beacon[5]: a beacon needs `id`, `x` and `y`");
+        EXPECT_EQ(messages[6],
+                  "bad.toml:29: magnetic.amplitude_deg = -3: must be between 0 and 180 degrees");
+        EXPECT_EQ(messages[7],
+                  "bad.toml:30: magnetic.wavelength = 0: must be greater than 0 and at most 1e6 m");
+    }
 }
 
 TEST(WorldFile, ParsesWallsStartAndPath) {

@@ -1,3 +1,4 @@
 # plots tests
 legofeup_add_ui_test(test_plots_panel test_plots_panel.cpp)
 legofeup_add_ui_test(test_plots_export test_plots_export.cpp)
+legofeup_add_ui_test(test_lesson_views test_lesson_views.cpp)

@@ -106,6 +106,9 @@ void ArenaCache::build_scene(const RunHistory& history) {
         scene_bounds_.add(to_point(wall.start));
         scene_bounds_.add(to_point(wall.end));
     }
+    for (const Beacon& beacon : scene.beacons) {
+        scene_bounds_.add(to_point(beacon.position));
+    }
 }
 
 void ArenaCache::rebuild(const RunHistory& history, EllipseConfidence level) {

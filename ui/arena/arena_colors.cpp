@@ -58,6 +58,8 @@ ArenaColors arena_colors(const QPalette& palette) {
     colors.ellipse = dark ? QColor(0xf0, 0x62, 0x92) : QColor(0xad, 0x14, 0x57);     // pink
     colors.associated = dark ? QColor(0x4d, 0xd0, 0xe1) : QColor(0x00, 0x83, 0x8f);  // cyan
     colors.rejected = dark ? QColor(0xef, 0x53, 0x50) : QColor(0xc6, 0x28, 0x28);    // red
+    colors.beacon = dark ? QColor(0xff, 0xd5, 0x4f) : QColor(0x6d, 0x4c, 0x41);  // amber / brown
+    colors.shadow = dark ? QColor(0xce, 0x93, 0xd8) : QColor(0x6a, 0x1b, 0x9a);  // purple
     colors.out_of_range = with_alpha(colors.foreground, 130);
     colors.trail = mix(colors.ellipse, colors.background, dark ? 0.45 : 0.38);
     colors.grid = mix(colors.foreground, colors.background, dark ? 0.11 : 0.09);

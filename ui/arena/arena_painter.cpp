@@ -251,6 +251,10 @@ void ArenaPainter::ellipse(const CovarianceEllipse& ellipse) {
 }
 
 void ArenaPainter::estimate_marker(const Pose2& pose) {
+    heading_marker(pose, style_.colors.estimate);
+}
+
+void ArenaPainter::heading_marker(const Pose2& pose, const QColor& color) {
     if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
         return;
     }
@@ -262,12 +266,12 @@ void ArenaPainter::estimate_marker(const Pose2& pose) {
     const double length = std::max(0.15 * std::abs(world_to_widget_.m11()), 28.0 * s);
     const QPointF tip = centre + length * direction;
     const QPointF base = tip - 11.0 * s * direction;
-    painter_.setPen(pen(style_.colors.estimate, 2.5));
+    painter_.setPen(pen(color, 2.5));
     painter_.drawLine(centre, base);
     QPolygonF head;
     head << tip << base + 5.5 * s * normal << base - 5.5 * s * normal;
     painter_.setPen(Qt::NoPen);
-    painter_.setBrush(style_.colors.estimate);
+    painter_.setBrush(color);
     painter_.drawPolygon(head);
     painter_.setPen(pen(style_.colors.background, 1.5));
     painter_.drawEllipse(centre, 4.5 * s, 4.5 * s);
@@ -369,6 +373,23 @@ void ArenaPainter::legend(const std::vector<LegendEntry>& entries, const QRectF&
                 painter_.drawEllipse(QPointF((left.x() + right.x()) / 2.0, middle), m.swatch / 2.0,
                                      m.row * 0.32);
                 break;
+            case LegendEntry::Swatch::DashedEllipse:
+                painter_.setPen(pen(entry.color, 1.5, Qt::DashLine));
+                painter_.setBrush(with_alpha(entry.color, 30));
+                painter_.drawEllipse(QPointF((left.x() + right.x()) / 2.0, middle), m.swatch / 2.0,
+                                     m.row * 0.32);
+                break;
+            case LegendEntry::Swatch::Diamond: {
+                const QPointF c((left.x() + right.x()) / 2.0, middle);
+                const double h = m.row * 0.3;
+                QPolygonF diamond;
+                diamond << c + QPointF(0.0, -h) << c + QPointF(h, 0.0) << c + QPointF(0.0, h)
+                        << c + QPointF(-h, 0.0);
+                painter_.setPen(Qt::NoPen);
+                painter_.setBrush(entry.color);
+                painter_.drawPolygon(diamond);
+                break;
+            }
             case LegendEntry::Swatch::Band: {
                 QPen band = pen(with_alpha(entry.color, 140), 8.0);
                 band.setCapStyle(Qt::FlatCap);

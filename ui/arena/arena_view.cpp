@@ -21,6 +21,16 @@ bool finite_position(const StateVector& x) {
     return std::isfinite(x(kX)) && std::isfinite(x(kY));
 }
 
+QString kind_text(FilterKind kind) {
+    return kind == FilterKind::Ukf ? QStringLiteral("UKF") : QStringLiteral("EKF");
+}
+
+/// What the primary estimate is, for the legend: "EKF", "UKF" or "5-state EKF".
+QString estimator_text(Localisation localisation, FilterKind kind) {
+    return localisation == Localisation::GyroFusion ? QStringLiteral("5-state EKF")
+                                                    : kind_text(kind);
+}
+
 }  // namespace
 
 ArenaView::ArenaView(const RunHistory& history, QWidget* parent)
@@ -161,6 +171,14 @@ void ArenaView::samplesAppended(int first, int count) {
     // The cache takes every sample it has not seen (and rebuilds if the history restarted
     // behind our back), so a skipped or repeated notification cannot corrupt it.
     cache_.update(history_, confidence_);
+    // The legend grows when the run turns out to have a second filter or no IR: refit.
+    const QSizeF legend = legend_size(legendEntries(), legendFont());
+    if (legend != legend_size_) {
+        legend_size_ = legend;
+        if (fitted_) {
+            fitToArena();
+        }
+    }
     update();
 }
 
@@ -299,8 +317,11 @@ void ArenaView::paintEvent(QPaintEvent* /*event*/) {
         arena.polyline(cache_.estimate_path().simplified(tolerance), colors.estimate, 1.0);
     }
 
-    // 3. The latest step: ghost, real robot, IR rays, ellipse, estimate.
+    // 3. The latest step: beacons, ghost, real robot, IR or bearing rays, the other filter
+    //    kind's estimate, ellipse, estimate.
+    arena.beacons(scene.beacons);
     CovarianceEllipse ellipse;
+    CovarianceEllipse shadow_ellipse;
     if (latest != nullptr) {
         const LoopSnapshot& snapshot = latest->snapshot;
         if (show_odometry_) {
@@ -309,7 +330,19 @@ void ArenaView::paintEvent(QPaintEvent* /*event*/) {
         if (show_truth_ && latest->truth) {
             arena.robot(latest->truth->pose, scene.ir_mount, colors.truth, false);
         }
-        arena.ir_rays(snapshot, scene.ir_mount, scene.ir_max_range);
+        if (snapshot.localisation == Localisation::Walls) {
+            arena.ir_rays(snapshot, scene.ir_mount, scene.ir_max_range);
+        }
+        if (!scene.beacons.empty()) {
+            arena.beacon_rays(snapshot, scene.beacons);
+        }
+        if (snapshot.shadow.active) {
+            const StateVector& shadow = snapshot.shadow.estimate;
+            shadow_ellipse = covariance_ellipse(
+                Vector2(shadow(kX), shadow(kY)),
+                snapshot.shadow.covariance.topLeftCorner<2, 2>().eval(), confidence_);
+            arena.shadow_estimate(to_pose(shadow), shadow_ellipse);
+        }
         ellipse = sample_ellipse(*latest, confidence_);
         arena.ellipse(ellipse);
         arena.estimate_marker(to_pose(snapshot.estimate));
@@ -330,6 +363,22 @@ void ArenaView::paintEvent(QPaintEvent* /*event*/) {
             text += QStringLiteral(" (P not positive semi-definite)");
         }
         arena.label(at + QPointF(reach, -reach), text, colors.ellipse);
+        const ShadowEstimate& shadow = latest->snapshot.shadow;
+        if (shadow.active && finite_position(shadow.estimate)) {
+            // The other filter's name below-left of its estimate, clear of the label above.
+            const double shadow_radius =
+                std::max(shadow_ellipse.valid ? shadow_ellipse.semi_major * camera.scale() : 0.0,
+                         18.0 * style.line_scale);
+            const QPointF shadow_at =
+                transform.map(QPointF(shadow.estimate(kX), shadow.estimate(kY)));
+            const double away = shadow_radius * 0.75 + 6.0;
+            const QFontMetricsF metrics(style.font);
+            arena.label(
+                shadow_at
+                    + QPointF(-away - metrics.horizontalAdvance(kind_text(shadow.kind)) - 8.0,
+                              away + metrics.height() + 4.0),
+                kind_text(shadow.kind), colors.shadow);
+        }
     }
 
     if (show_legend_) {
@@ -350,15 +399,37 @@ void ArenaView::paintEvent(QPaintEvent* /*event*/) {
     }
 }
 
+QStringList ArenaView::legendTexts() const {
+    QStringList texts;
+    for (const LegendEntry& entry : legendEntries()) {
+        texts << entry.text;
+    }
+    return texts;
+}
+
 std::vector<LegendEntry> ArenaView::legendEntries() const {
     const ArenaColors colors = arena_colors(palette());
     // Before the first sample, assume the run will have truth (so the fit leaves room).
     const bool truth = history_.empty() || history_.latest().truth.has_value();
+    const LoopSnapshot* latest = history_.empty() ? nullptr : &history_.latest().snapshot;
+    const bool beacons = !history_.scene().beacons.empty();
+    // The IR rays belong to the wall lesson; before the first sample, a world with beacons
+    // is taken to be the beacon lesson's.
+    const bool walls = latest != nullptr ? latest->localisation == Localisation::Walls : !beacons;
     std::vector<LegendEntry> legend;
     if (show_truth_ && truth) {
         legend.push_back({LegendEntry::Swatch::Line, colors.truth, tr("true robot")});
     }
-    legend.push_back({LegendEntry::Swatch::Line, colors.estimate, tr("estimate (EKF)")});
+    legend.push_back(
+        {LegendEntry::Swatch::Line, colors.estimate,
+         tr("estimate (%1)")
+             .arg(latest != nullptr ? estimator_text(latest->localisation, latest->filter_kind)
+                                    : kind_text(FilterKind::Ekf))});
+    if (latest != nullptr && latest->shadow.active) {
+        legend.push_back(
+            {LegendEntry::Swatch::DashedEllipse, colors.shadow,
+             tr("%1 on the same frames, its ellipse dashed").arg(kind_text(latest->shadow.kind))});
+    }
     if (show_odometry_) {
         legend.push_back(
             {LegendEntry::Swatch::Line, colors.odometry, tr("odometry only (ghost dashed)")});
@@ -368,10 +439,21 @@ std::vector<LegendEntry> ArenaView::legendEntries() const {
         legend.push_back(
             {LegendEntry::Swatch::Line, colors.trail, tr("past ellipses, one per second")});
     }
-    legend.push_back(
-        {LegendEntry::Swatch::Band, colors.associated, tr("IR rays used; the wall matched")});
-    legend.push_back({LegendEntry::Swatch::Line, colors.rejected, tr("IR rays not used")});
-    legend.push_back({LegendEntry::Swatch::Dashed, colors.out_of_range, tr("IR out of range")});
+    if (walls) {
+        legend.push_back(
+            {LegendEntry::Swatch::Band, colors.associated, tr("IR rays used; the wall matched")});
+        legend.push_back({LegendEntry::Swatch::Line, colors.rejected, tr("IR rays not used")});
+        legend.push_back({LegendEntry::Swatch::Dashed, colors.out_of_range, tr("IR out of range")});
+    }
+    if (beacons) {
+        legend.push_back({LegendEntry::Swatch::Diamond, colors.beacon, tr("beacons")});
+        legend.push_back(
+            {LegendEntry::Swatch::Line, colors.associated, tr("bearings measured, applied")});
+        legend.push_back(
+            {LegendEntry::Swatch::Line, colors.rejected, tr("bearings measured, not applied")});
+        legend.push_back(
+            {LegendEntry::Swatch::Dashed, colors.foreground, tr("bearings the filter expected")});
+    }
     if (!history_.scene().path.empty()) {
         legend.push_back({LegendEntry::Swatch::Dashed, colors.path, tr("intended path")});
     }

@@ -3,6 +3,7 @@ list(APPEND LEGOFEUP_UI_SOURCES
     arena/arena_cache.cpp
     arena/arena_colors.cpp
     arena/arena_painter.cpp
+    arena/arena_painter_lessons.cpp
     arena/arena_view.cpp
     arena/covariance_ellipse.cpp
     arena/history_layer.cpp

@@ -33,6 +33,14 @@ namespace {
 
 constexpr int kAutosaveDelayMs = 800;  // typing pauses this long before the answers are kept
 
+/// How the lesson choice (and the preferences) name a built-in lesson: "builtin:<id>";
+/// anything else is a lesson file's path, and "" (older preferences) the LegoFeup lesson.
+const QString kBuiltInPrefix = QStringLiteral("builtin:");
+
+QString built_in_key(const std::string& id) {
+    return kBuiltInPrefix + QString::fromStdString(id);
+}
+
 /// One line per step: its state's mark, id and title, and once run the checks passed.
 QString step_label(const lessons::LessonStep& step, const LessonProgress& progress) {
     static const std::array<QString, 4> kMarks = {QStringLiteral("○"), QStringLiteral("▶"),
@@ -105,8 +113,8 @@ LessonPanel::LessonPanel(Session& session, QWidget* parent) : QWidget(parent), s
         if (file == lesson_file_) {
             return;
         }
-        if (file.isEmpty()) {
-            useBuiltInLesson();
+        if (file.startsWith(kBuiltInPrefix)) {
+            useBuiltInLesson(file.mid(kBuiltInPrefix.size()));
         } else if (const QString error = openLesson(file); !error.isEmpty()) {
             emit note(error);
         }
@@ -164,7 +172,9 @@ LessonPanel::LessonPanel(Session& session, QWidget* parent) : QWidget(parent), s
 
     // The lesson used last, if it still reads; otherwise the built-in one.
     const QString last = preferences::kLessonFile.read();
-    if (last.isEmpty() || !openLesson(last).isEmpty()) {
+    if (last.startsWith(kBuiltInPrefix)) {
+        useBuiltInLesson(last.mid(kBuiltInPrefix.size()));
+    } else if (last.isEmpty() || !openLesson(last).isEmpty()) {
         useBuiltInLesson();
     }
 }
@@ -194,12 +204,16 @@ void LessonPanel::setLesson(lessons::Lesson lesson, const QString& file) {
 
     const QSignalBlocker blocker(lesson_choice_);
     lesson_choice_->clear();
-    lesson_choice_->addItem(tr("LegoFeup (built-in)"), QString());
-    if (!file.isEmpty()) {
-        lesson_choice_->addItem(QFileInfo(file).fileName(), file);
-        lesson_choice_->setItemData(1, file, Qt::ToolTipRole);
-        lesson_choice_->setCurrentIndex(1);
+    // Every built-in lesson (lessons::built_in_lessons(), in its order), then the file.
+    for (const lessons::BuiltInLesson& built_in : lessons::built_in_lessons()) {
+        lesson_choice_->addItem(tr("%1 (built-in)").arg(QString::fromStdString(built_in.title)),
+                                built_in_key(built_in.id));
     }
+    if (!file.startsWith(kBuiltInPrefix)) {
+        lesson_choice_->addItem(QFileInfo(file).fileName(), file);
+        lesson_choice_->setItemData(lesson_choice_->count() - 1, file, Qt::ToolTipRole);
+    }
+    lesson_choice_->setCurrentIndex(std::max(0, lesson_choice_->findData(file)));
     lesson_title_->setText(
         QStringLiteral("<b>%1</b>")
             .arg(QString::fromStdString(progress_->lesson().title).toHtmlEscaped()));
@@ -313,8 +327,12 @@ QString LessonPanel::openLesson(const QString& path) {
     return {};
 }
 
-void LessonPanel::useBuiltInLesson() {
-    setLesson(lessons::legofeup_lesson(), QString());
+void LessonPanel::useBuiltInLesson(const QString& id) {
+    const lessons::Lesson* lesson = lessons::find_built_in_lesson(id.toStdString());
+    if (lesson == nullptr) {
+        lesson = &lessons::legofeup_lesson();  // an id from an older version: the first one
+    }
+    setLesson(*lesson, built_in_key(lesson->id));
 }
 
 QString LessonPanel::saveAnswers(const QString& path) const {

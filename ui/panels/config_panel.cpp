@@ -5,10 +5,12 @@
 #include <QScrollArea>
 #include <QToolBox>
 #include <QVBoxLayout>
-#include <array>
+#include <algorithm>
+#include <vector>
 
 #include "legofeup/ui/panels/message_line.hpp"
 #include "legofeup/ui/panels/setting_editor.hpp"
+#include "legofeup/ui/panels/setting_relevance.hpp"
 #include "legofeup/ui/session/session.hpp"
 
 namespace legofeup::ui {
@@ -20,17 +22,52 @@ struct Page {
 };
 
 // The order students meet them: the filter's noise first, the simulator's errors next.
-const std::array<Page, 6>& pages() {
-    static const std::array<Page, 6> kPages = {{
-        {QT_TRANSLATE_NOOP("ConfigPanel", "Filter: Q and R"), {"filter"}},
+const std::vector<Page>& known_pages() {
+    static const std::vector<Page> kPages = {{
+        {QT_TRANSLATE_NOOP("ConfigPanel", "Filter: Q and R, EKF or UKF"), {"filter"}},
+        {QT_TRANSLATE_NOOP("ConfigPanel", "Localisation and the lessons' filters"),
+         {"localisation", "beacons", "gyro_fusion", "compass", "wheel_speed_kf", "velocity_kf",
+          "calibration"}},
         {QT_TRANSLATE_NOOP("ConfigPanel", "Initial belief: pose and P0"), {"initial"}},
         {QT_TRANSLATE_NOOP("ConfigPanel", "Controller: path, V_ref, W_ref"), {"control"}},
         {QT_TRANSLATE_NOOP("ConfigPanel", "Simulator: noise and systematic errors"), {"simulator"}},
+        {QT_TRANSLATE_NOOP("ConfigPanel", "Simulator: beacons, gyro, accelerometers, compass"),
+         {"beacon_scanner", "gyro", "accelerometers", "compass_sensor", "displacement"}},
         {QT_TRANSLATE_NOOP("ConfigPanel", "Robot and sensors"),
-         {"robot", "ir_curve", "association"}},
+         {"robot", "ir_mount", "ir_curve", "association"}},
         {QT_TRANSLATE_NOOP("ConfigPanel", "Run: seed, laps, world"), {""}},
     }};
     return kPages;
+}
+
+bool on_page(const Page& page, const std::string& section) {
+    return std::find(page.sections.begin(), page.sections.end(), section) != page.sections.end();
+}
+
+/// The known pages that have a setting, and a last page for any section they do not name.
+std::vector<Page> pages() {
+    std::vector<Page> result;
+    for (const Page& page : known_pages()) {
+        const auto has_setting = [&page](const lessons::Setting& setting) {
+            return on_page(page, setting.section());
+        };
+        if (std::any_of(lessons::run_settings().begin(), lessons::run_settings().end(),
+                        has_setting)) {
+            result.push_back(page);
+        }
+    }
+    Page others{QT_TRANSLATE_NOOP("ConfigPanel", "Other settings"), {}};
+    for (const lessons::Setting& setting : lessons::run_settings()) {
+        const std::string section = setting.section();
+        const auto known = [&section](const Page& page) { return on_page(page, section); };
+        if (std::none_of(result.begin(), result.end(), known) && !known(others)) {
+            others.sections.push_back(section);
+        }
+    }
+    if (!others.sections.empty()) {
+        result.push_back(others);
+    }
+    return result;
 }
 
 /// The length of the paper's symbol at the start of a help text ("Q11: variance of …",
@@ -84,6 +121,7 @@ ConfigPanel::ConfigPanel(Session& session, QWidget* parent) : QWidget(parent), s
     pages_ = new QToolBox(this);
     layout->addWidget(pages_, 1);
     for (const Page& page : pages()) {
+        const int page_index = pages_->count();
         auto* form_widget = new QWidget;
         auto* form = new QFormLayout(form_widget);
         form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
@@ -104,6 +142,7 @@ ConfigPanel::ConfigPanel(Session& session, QWidget* parent) : QWidget(parent), s
             field_layout->addWidget(editor);
             field_layout->addWidget(help);
             form->addRow(short_label(setting), field);
+            rows_[setting.key] = {form->labelForField(field), field, page_index};
             connect(
                 editor, &SettingEditor::proposed, this,
                 [this, editor](const lessons::SettingValue& value, const QString& text) {
@@ -156,6 +195,34 @@ QString ConfigPanel::message() const {
 void ConfigPanel::refresh() {
     for (const auto& [key, editor] : editors_) {
         editor->showValueOf(session_.config());
+    }
+    showRelevance(session_.resolved().loop.lesson.localisation);
+}
+
+bool ConfigPanel::isRelevant(const std::string& key) const {
+    const auto found = rows_.find(key);
+    return found != rows_.end() && found->second.field->isEnabled();
+}
+
+void ConfigPanel::showRelevance(Localisation localisation) {
+    std::vector<bool> page_used(static_cast<std::size_t>(pages_->count()), false);
+    for (const auto& [key, row] : rows_) {
+        const bool relevant = setting_relevant(key, localisation);
+        row.field->setEnabled(relevant);
+        if (row.label != nullptr) {
+            row.label->setEnabled(relevant);
+            row.label->setToolTip(relevant ? QString()
+                                           : tr("Not used by this run: a setting of %1")
+                                                 .arg(QString::fromStdString(setting_lesson(key))));
+        }
+        if (relevant) {
+            page_used[static_cast<std::size_t>(row.page)] = true;
+        }
+    }
+    // A page none of whose settings this run uses is greyed (it still opens on a click
+    // of an enabled page only), so the lesson's own pages stand out.
+    for (int page = 0; page < pages_->count(); ++page) {
+        pages_->setItemEnabled(page, page_used[static_cast<std::size_t>(page)]);
     }
 }
 

@@ -22,6 +22,18 @@ constexpr int kColourRight = 0;  // V1, ds1
 constexpr int kColourLeft = 1;   // V2, ds2
 constexpr int kColourNis = 3;
 constexpr int kColourNees = 4;
+// The further lessons' plots: truth green, estimate blue, sensors vermilion and purple.
+constexpr int kColourTruth = 2;
+constexpr int kColourEstimate = 0;
+constexpr int kColourGyro = 1;
+constexpr int kColourCompass = 3;
+constexpr int kColourFused = 4;
+constexpr int kColourEkf = 0;
+constexpr int kColourUkf = 1;
+constexpr int kColourApplied = 0;
+constexpr int kColourGated = 1;
+/// µs per step: a ~1 s exponential average at 20 Hz (a = 1/20).
+constexpr double kCostSmoothing = 0.05;
 
 double variance(const RunSample& s, int i) {
     return s.snapshot.covariance(i, i);
@@ -114,6 +126,181 @@ std::optional<double> nees(const RunSample& s) {
     return s.nees;
 }
 
+// ---- the further lessons (papers 002–004) ---------------------------------------------
+
+/// The bearing innovations z − h(X̂) of this step's beacon updates, degrees, wrapped; those
+/// applied (`applied`) or those the gate or a bad S turned away.
+int bearing_innovations(const RunSample& s, std::span<double, kMaxPointsPerSample> out,
+                        bool applied) {
+    const BeaconUpdates& beacons = s.snapshot.beacons;
+    const int count = std::min<int>(beacons.count, kMaxPointsPerSample);
+    int written = 0;
+    for (int i = 0; i < count; ++i) {
+        const BeaconUpdate& update = beacons.updates[static_cast<std::size_t>(i)];
+        if (!update.known || update.status == StepStatus::NotAttempted
+            || (update.status == StepStatus::Applied) != applied) {
+            continue;
+        }
+        out[static_cast<std::size_t>(written++)] =
+            radians_to_degrees(wrap_angle(update.bearing - update.predicted));
+    }
+    return written;
+}
+int bearing_applied(const RunSample& s, std::span<double, kMaxPointsPerSample> out) {
+    return bearing_innovations(s, out, true);
+}
+int bearing_gated(const RunSample& s, std::span<double, kMaxPointsPerSample> out) {
+    return bearing_innovations(s, out, false);
+}
+
+bool has_heading_sensor(const RunSample& s) {
+    return s.snapshot.readings.has_gyro || s.snapshot.readings.has_compass;
+}
+/// `heading` − θ_true wrapped to (−180°, 180°]; NaN without truth.
+double heading_error_degrees(const RunSample& s, double heading) {
+    return s.truth ? radians_to_degrees(wrap_angle(heading - s.truth->pose.theta)) : kNaN;
+}
+/// Drawn beside the gyro's and the compass's errors, so only when the run has one of them.
+std::optional<double> heading_error_estimate(const RunSample& s) {
+    if (!has_heading_sensor(s)) {
+        return std::nullopt;
+    }
+    return heading_error_degrees(s, s.snapshot.estimate(kTheta));
+}
+std::optional<double> heading_error_gyro(const RunSample& s) {
+    if (!s.snapshot.readings.has_gyro) {
+        return std::nullopt;
+    }
+    return heading_error_degrees(s, s.snapshot.readings.gyro_heading);
+}
+std::optional<double> heading_error_compass(const RunSample& s) {
+    if (!s.snapshot.readings.has_compass) {
+        return std::nullopt;
+    }
+    return heading_error_degrees(s, s.snapshot.readings.compass_heading);
+}
+
+std::optional<double> turn_rate_true(const RunSample& s) {
+    if (!s.snapshot.readings.has_gyro) {
+        return std::nullopt;
+    }
+    return s.truth ? radians_to_degrees(s.truth->velocity.w) : kNaN;
+}
+std::optional<double> turn_rate_gyro(const RunSample& s) {
+    if (!s.snapshot.readings.has_gyro) {
+        return std::nullopt;
+    }
+    return radians_to_degrees(s.snapshot.readings.gyro_rate);
+}
+std::optional<double> turn_rate_encoders(const RunSample& s) {
+    if (!s.snapshot.readings.has_gyro || !s.snapshot.speeds.valid) {
+        return std::nullopt;
+    }
+    return radians_to_degrees(s.snapshot.speeds.body_encoders.w);
+}
+std::optional<double> turn_rate_fused(const RunSample& s) {
+    if (s.snapshot.localisation != Localisation::GyroFusion) {
+        return std::nullopt;
+    }
+    return radians_to_degrees(s.snapshot.fused_velocity.w);
+}
+
+/// The wheel-speed estimates (computed in every run) belong to the lessons of paper 003: a
+/// run with its sensors (gyroscope, accelerometers) or its 5-state fusion.
+bool has_wheel_speed_estimates(const RunSample& s) {
+    const LoopSnapshot& x = s.snapshot;
+    return x.speeds.valid
+           && (x.readings.has_gyro || x.readings.has_accelerometers
+               || x.localisation == Localisation::GyroFusion);
+}
+std::optional<double> wheel_true(const RunSample& s, bool right) {
+    if (!has_wheel_speed_estimates(s)) {
+        return std::nullopt;
+    }
+    if (!s.truth) {
+        return kNaN;
+    }
+    return right ? s.truth->wheel_surface_speeds.right : s.truth->wheel_surface_speeds.left;
+}
+std::optional<double> wheel_right_true(const RunSample& s) {
+    return wheel_true(s, true);
+}
+std::optional<double> wheel_left_true(const RunSample& s) {
+    return wheel_true(s, false);
+}
+std::optional<double> wheel_estimate(const RunSample& s, const std::array<double, 2>& speeds,
+                                     int wheel) {
+    if (!has_wheel_speed_estimates(s)) {
+        return std::nullopt;
+    }
+    return speeds[static_cast<std::size_t>(wheel)];
+}
+std::optional<double> wheel_right_kf(const RunSample& s) {
+    return wheel_estimate(s, s.snapshot.speeds.wheel_kf, 0);
+}
+std::optional<double> wheel_left_kf(const RunSample& s) {
+    return wheel_estimate(s, s.snapshot.speeds.wheel_kf, 1);
+}
+std::optional<double> wheel_right_differentiated(const RunSample& s) {
+    return wheel_estimate(s, s.snapshot.speeds.wheel_differentiated, 0);
+}
+std::optional<double> wheel_left_differentiated(const RunSample& s) {
+    return wheel_estimate(s, s.snapshot.speeds.wheel_differentiated, 1);
+}
+
+/// The estimate and covariance of filter `kind` at this sample: the primary's or the
+/// shadow's; nothing unless both ran (the comparison is the point).
+struct KindEstimate {
+    const StateVector* estimate = nullptr;
+    double seconds = 0.0;
+};
+std::optional<KindEstimate> estimate_of(const RunSample& s, FilterKind kind) {
+    const LoopSnapshot& x = s.snapshot;
+    if (!x.shadow.active) {
+        return std::nullopt;
+    }
+    if (x.filter_kind == kind) {
+        return KindEstimate{&x.estimate, x.filter_seconds};
+    }
+    if (x.shadow.kind == kind) {
+        return KindEstimate{&x.shadow.estimate, x.shadow_filter_seconds};
+    }
+    return std::nullopt;
+}
+/// ‖(x̂, ŷ) − (x, y)‖, m.
+std::optional<double> position_error_of(const RunSample& s, FilterKind kind) {
+    const std::optional<KindEstimate> of = estimate_of(s, kind);
+    if (!of) {
+        return std::nullopt;
+    }
+    if (!s.truth) {
+        return kNaN;
+    }
+    return std::hypot((*of->estimate)(kX)-s.truth->pose.x, (*of->estimate)(kY)-s.truth->pose.y);
+}
+std::optional<double> ekf_position_error(const RunSample& s) {
+    return position_error_of(s, FilterKind::Ekf);
+}
+std::optional<double> ukf_position_error(const RunSample& s) {
+    return position_error_of(s, FilterKind::Ukf);
+}
+std::optional<double> cost_of(const RunSample& s, FilterKind kind) {
+    const std::optional<KindEstimate> of = estimate_of(s, kind);
+    if (!of || !std::isfinite(of->seconds)) {
+        return std::nullopt;
+    }
+    return of->seconds * 1e6;
+}
+std::optional<double> ekf_cost(const RunSample& s) {
+    return cost_of(s, FilterKind::Ekf);
+}
+std::optional<double> ukf_cost(const RunSample& s) {
+    return cost_of(s, FilterKind::Ukf);
+}
+std::optional<double> no_single_value(const RunSample& /*s*/) {
+    return std::nullopt;
+}
+
 // clang-format off
 constexpr std::array<PlotDefinition, kPlotKindCount> kPlots{{
     {PlotKind::Covariance, "Covariance: diagonal of P", "P (m², rad²)", "covariance", true},
@@ -127,6 +314,17 @@ constexpr std::array<PlotDefinition, kPlotKindCount> kPlots{{
     {PlotKind::Nis, "NIS: normalised innovation squared, χ²(2)", "NIS", "nis", true, 2},
     {PlotKind::Nees, "NEES: normalised estimation error squared, χ²(3)", "NEES", "nees", true,
      3},
+    {PlotKind::Bearings, "Beacon bearings: innovation z − h(X̂)", "innovation (°)",
+     "bearing_innovations", false, 0, true},
+    {PlotKind::HeadingSensors, "Heading errors against the truth",
+     "error (°)", "heading_sensors", false, 0, true},
+    {PlotKind::TurnRate, "Turn rate ω", "ω (°/s)", "turn_rate", false, 0, true},
+    {PlotKind::WheelSpeedEstimates, "Wheel speeds: Kalman filter vs differentiated encoders",
+     "speed (m/s)", "wheel_speed_estimates", false, 0, true},
+    {PlotKind::ShadowError, "EKF and UKF on the same frames: position error", "‖error‖ (m)",
+     "ekf_ukf_error", false, 0, true},
+    {PlotKind::FilterCost, "Filter cost per step (smoothed, this machine)", "time (µs)",
+     "filter_cost", false, 0, true},
 }};
 
 using enum Series;
@@ -155,6 +353,43 @@ constexpr std::array<SeriesDefinition, kSeriesCount> kSeries{{
     {Ds2, PlotKind::IrDistances, "ds2 rear", ds2, kColourLeft, Line, Ds2},
     {Nis, PlotKind::Nis, "NIS of a wall update", nis, kColourNis, Points, Nis},
     {Nees, PlotKind::Nees, "NEES", nees, kColourNees, Line, Nees},
+    {BearingApplied, PlotKind::Bearings, "applied", no_single_value, kColourApplied, Points,
+     BearingApplied, bearing_applied},
+    {BearingGated, PlotKind::Bearings, "not applied (gate)", no_single_value, kColourGated,
+     Points, BearingGated, bearing_gated},
+    {HeadingErrorEstimate, PlotKind::HeadingSensors, "estimate", heading_error_estimate,
+     kColourEstimate, Line, HeadingErrorEstimate},
+    {HeadingErrorGyro, PlotKind::HeadingSensors, "gyro integrated", heading_error_gyro,
+     kColourGyro, ThinLine, HeadingErrorGyro},
+    {HeadingErrorCompass, PlotKind::HeadingSensors, "compass", heading_error_compass,
+     kColourCompass, ThinLine, HeadingErrorCompass},
+    {TurnRateTrue, PlotKind::TurnRate, "truth", turn_rate_true, kColourTruth, Line, TurnRateTrue},
+    {TurnRateGyro, PlotKind::TurnRate, "gyroscope", turn_rate_gyro, kColourGyro, ThinLine,
+     TurnRateGyro},
+    {TurnRateEncoders, PlotKind::TurnRate, "encoders", turn_rate_encoders, kColourCompass,
+     ThinLine, TurnRateEncoders},
+    {TurnRateFused, PlotKind::TurnRate, "5-state EKF", turn_rate_fused, kColourFused, Line,
+     TurnRateFused},
+    {WheelRightTrue, PlotKind::WheelSpeedEstimates, "right true", wheel_right_true, kColourTruth,
+     ThinLine, WheelRightTrue},
+    {WheelLeftTrue, PlotKind::WheelSpeedEstimates, "left true", wheel_left_true, kColourTruth,
+     ThinLine, WheelLeftTrue},
+    {WheelRightKf, PlotKind::WheelSpeedEstimates, "right KF", wheel_right_kf, kColourRight, Line,
+     WheelRightKf},
+    {WheelLeftKf, PlotKind::WheelSpeedEstimates, "left KF", wheel_left_kf, kColourLeft, Line,
+     WheelLeftKf},
+    {WheelRightDifferentiated, PlotKind::WheelSpeedEstimates, "right differentiated",
+     wheel_right_differentiated, kColourCompass, ThinLine, WheelRightDifferentiated},
+    {WheelLeftDifferentiated, PlotKind::WheelSpeedEstimates, "left differentiated",
+     wheel_left_differentiated, kColourFused, ThinLine, WheelLeftDifferentiated},
+    {EkfPositionError, PlotKind::ShadowError, "EKF", ekf_position_error, kColourEkf, Line,
+     EkfPositionError},
+    {UkfPositionError, PlotKind::ShadowError, "UKF", ukf_position_error, kColourUkf, Line,
+     UkfPositionError},
+    {EkfCost, PlotKind::FilterCost, "EKF", ekf_cost, kColourEkf, Line, EkfCost, nullptr,
+     kCostSmoothing},
+    {UkfCost, PlotKind::FilterCost, "UKF", ukf_cost, kColourUkf, Line, UkfCost, nullptr,
+     kCostSmoothing},
 }};
 // clang-format on
 

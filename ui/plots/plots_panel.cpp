@@ -7,6 +7,8 @@
 #include <QTabWidget>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "legofeup/ui/plots/plot_style.hpp"
@@ -26,6 +28,10 @@ std::vector<Tab> tabs() {
         {"Estimate", {PlotKind::Covariance, PlotKind::PositionError, PlotKind::HeadingError}},
         {"Commands && sensors", {PlotKind::WheelSpeeds, PlotKind::IrDistances}},
         {"Consistency", {PlotKind::Nis, PlotKind::Nees}},
+        // The further lessons': each tab and plot appears once the run has its data.
+        {"Beacons && filters", {PlotKind::Bearings, PlotKind::ShadowError, PlotKind::FilterCost}},
+        {"Heading && speed sensors",
+         {PlotKind::HeadingSensors, PlotKind::TurnRate, PlotKind::WheelSpeedEstimates}},
     };
 }
 
@@ -78,10 +84,16 @@ PlotsPanel::PlotsPanel(const RunHistory& history, QWidget* parent)
     connect(window_choice_, &QComboBox::currentIndexChanged, this,
             [this](int index) { setTimeWindow(window_choice_->itemData(index).toDouble()); });
     tabs_->setCornerWidget(window_choice_, Qt::TopRightCorner);
+    connect(tabs_, &QTabWidget::tabBarClicked, this, [this](int index) {
+        if (index >= 0) {
+            wanted_tab_ = index;
+        }
+    });
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(tabs_);
+    showPresentPlots();
 
     applyPalette();
     historyRestarted();
@@ -216,6 +228,7 @@ void PlotsPanel::historyRestarted() {
     first_time_ = 0.0;
     last_time_ = 0.0;
     clearGraphs();
+    showPresentPlots();
     showNoTruth(false);
     const double range = history_.scene().ir_max_range;
     moveReferenceLine(PlotKind::IrDistances, 0, range, ir_range_label(range));
@@ -228,6 +241,8 @@ void PlotsPanel::clearGraphs() {
         graph->data()->clear();
     }
     extents_.fill(ValueRange{});
+    smoothed_.fill(std::numeric_limits<double>::quiet_NaN());
+    has_points_.fill(false);
 }
 
 void PlotsPanel::samplesAppended(int first, int count) {
@@ -251,22 +266,42 @@ void PlotsPanel::samplesAppended(int first, int count) {
     QVector<double> values;
     keys.reserve(n);
     values.reserve(n);
+    std::array<double, kMaxPointsPerSample> several{};
     for (const SeriesDefinition& series : series_definitions()) {
         keys.clear();
         values.clear();
-        ValueRange& extent = extents_[index_of(series.series)];
+        const std::size_t s = index_of(series.series);
+        ValueRange& extent = extents_[s];
+        const auto add = [&](double time, double value) {
+            if (series.smoothing > 0.0 && std::isfinite(value)) {
+                // s ← s + a·(v − s), starting from the first value.
+                double& smoothed = smoothed_[s];
+                smoothed = std::isfinite(smoothed)
+                               ? smoothed + series.smoothing * (value - smoothed)
+                               : value;
+                value = smoothed;
+            }
+            keys.append(time);
+            values.append(value);
+            extent.include(value);
+        };
         for (std::size_t i = begin; i < end; ++i) {
             const RunSample& sample = samples[i];
-            if (const std::optional<double> value = series.value(sample)) {
-                keys.append(sample.snapshot.time);
-                values.append(*value);
-                extent.include(*value);
+            if (series.values != nullptr) {
+                const int points = series.values(sample, several);
+                for (int p = 0; p < points; ++p) {
+                    add(sample.snapshot.time, several[static_cast<std::size_t>(p)]);
+                }
+            } else if (const std::optional<double> value = series.value(sample)) {
+                add(sample.snapshot.time, *value);
             }
         }
         if (!keys.isEmpty()) {
-            graphs_[index_of(series.series)]->addData(keys, values, true);
+            graphs_[s]->addData(keys, values, true);
+            has_points_[s] = true;
         }
     }
+    showPresentPlots();
     if (begin == 0) {
         first_time_ = samples.front().snapshot.time;
     }
@@ -458,11 +493,68 @@ void PlotsPanel::onAfterReplot() {
     }
 }
 
+bool PlotsPanel::plotShown(PlotKind kind) const {
+    if (!plot_definition(kind).optional) {
+        return true;
+    }
+    return std::any_of(series_definitions().begin(), series_definitions().end(),
+                       [this, kind](const SeriesDefinition& series) {
+                           return series.plot == kind && has_points_[index_of(series.series)];
+                       });
+}
+
+void PlotsPanel::showPresentPlots() {
+    std::vector<Tab> all = tabs();
+    for (std::size_t t = 0; t < all.size(); ++t) {
+        bool any = false;
+        for (PlotKind kind : all[t].plots) {
+            const bool shown = plotShown(kind);
+            // Hidden, not removed: its graphs keep their data and the splitter its sizes.
+            plots_[index_of(kind)]->setVisible(shown);
+            any = any || shown;
+        }
+        tabs_->setTabVisible(static_cast<int>(t), any);
+    }
+    // The lessons' legends name only the series this run has (no "5-state EKF" in the
+    // compass lesson).
+    for (const SeriesDefinition& series : series_definitions()) {
+        if (!plot_definition(series.plot).optional || series.look == SeriesLook::BandEdge) {
+            continue;
+        }
+        QCPGraph* graph = graphs_[index_of(series.series)];
+        const bool listed = has_points_[index_of(series.series)];
+        QCustomPlot* plot = plots_[index_of(series.plot)];
+        if (listed != plot->legend->hasItemWithPlottable(graph)) {
+            if (listed) {
+                graph->addToLegend();
+            } else {
+                graph->removeFromLegend();
+            }
+            fit_legend(*plot, plot->width());
+        }
+    }
+    // A lesson's tab hidden at a restart comes back as soon as the new run has its data.
+    if (tabs_->isTabVisible(wanted_tab_) && tabs_->currentIndex() != wanted_tab_) {
+        tabs_->setCurrentIndex(wanted_tab_);
+    }
+}
+
+void PlotsPanel::setWantedTab(int index) {
+    if (index < 0 || index >= tabs_->count()) {
+        return;
+    }
+    wanted_tab_ = index;
+    showPresentPlots();
+}
+
 ExportResult PlotsPanel::exportPlots(const QString& directory, ExportFormats formats, QSize size) {
     std::vector<NamedPlot> named;
     named.reserve(plots_.size());
     for (int k = 0; k < kPlotKindCount; ++k) {
         const auto kind = static_cast<PlotKind>(k);
+        if (!plotShown(kind)) {
+            continue;  // a lesson's plot this run has no data for
+        }
         named.push_back({QString::fromUtf8(plot_definition(kind).file_stem), plot(kind)});
     }
     return export_plots(named, directory, formats, size);

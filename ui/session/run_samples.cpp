@@ -25,6 +25,11 @@ ArenaScene scene_of(const lessons::ResolvedRun& run) {
     scene.ir_mount = run.loop.ir_mount;
     scene.ir_max_range = run.loop.ir_curve.max_range;
     scene.control_period = run.config.simulator.control_period;
+    // The beacons only where the filter uses them: the standard arena has them too, and
+    // the wall lesson keeps the paper's look.
+    if (run.loop.lesson.localisation == Localisation::Beacons) {
+        scene.beacons = run.world.beacons;
+    }
     return scene;
 }
 

@@ -62,6 +62,13 @@ bool applies_live(const lessons::Setting& setting) {
     if (starts_with_any(key, {"filter.", "control.", "robot.", "ir_curve.", "association."})) {
         return true;
     }
+    // The further lessons' estimators: the loop takes them at the next step (a new
+    // localisation continues from the current belief); their simulated sensors are the
+    // simulator's and wait for the next start.
+    if (starts_with_any(key, {"localisation.", "beacons.", "gyro_fusion.", "compass.",
+                              "wheel_speed_kf.", "velocity_kf.", "calibration."})) {
+        return true;
+    }
     static constexpr std::array kLiveNoise = {"simulator.wheel_diameter_ratio",
                                               "simulator.wheel_base_ratio", "simulator.slip_noise",
                                               "simulator.ir_noise"};

@@ -97,6 +97,7 @@ void MainWindow::buildDocks() {
         static_cast<EllipseConfidence>(std::clamp(preferences::kEllipseConfidence.read(), 0, 2)));
     arena_->setFollowRobot(preferences::kFollowRobot.read());
     plots_->setTimeWindow(preferences::kPlotWindow.read());
+    plots_->setWantedTab(preferences::kPlotTab.read());
     toolbar_ = new RunToolBar(session_, this);
     addToolBar(Qt::TopToolBarArea, toolbar_);
 
@@ -402,6 +403,7 @@ void MainWindow::savePreferences() const {
     preferences::kWindowState.write(saveState());
     preferences::kFollowRobot.write(arena_->followRobot());
     preferences::kPlotWindow.write(plots_->timeWindow());
+    preferences::kPlotTab.write(plots_->wantedTab());
     preferences::kShowFrameTimes.write(frame_times_->isChecked());
     save_link_choice(session_.linkChoice());
     preferences::kExperiment.write(lesson_->currentStep());

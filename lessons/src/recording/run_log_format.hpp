@@ -2,7 +2,7 @@
 // The run log's text format, shared by its writer and its reader (docs/recording.md).
 // Private to lessons/.
 //
-//   legofeup-run-log 1                  format and version
+//   legofeup-run-log 2                  format and version (1: no optional-sensor columns)
 //   program: legofeup-cli 0.4.0         header lines "key: value", in this order
 //   title: experiment f: …
 //   seed: 42
@@ -14,7 +14,12 @@
 //   end: 2400 records                   written when the run ended normally
 //
 // Numbers are written shortest-round-trip (std::to_chars), so every double reads back to
-// the identical value; empty cells mean "none" (no truth, no frame).
+// the identical value; empty cells mean "none" (no truth, no frame, no such sensor).
+//
+// Version 2 appends the optional sensors of the further lessons (docs/recording.md): gyro,
+// the four accelerometer axes and compass as raw integers, and the beacon scan as one cell
+// "<count>;<id>:<bearing>;…" (e.g. "2;3:-3.141592653589793;200:1.5", "0" for a scan that saw
+// nothing). Version 1 logs (their 24 columns) still read, as frames without those sensors.
 
 #include <charconv>
 #include <optional>
@@ -33,12 +38,26 @@ inline constexpr std::string_view kConfig = "config";
 inline constexpr std::string_view kColumns = "columns";
 inline constexpr std::string_view kEnd = "end";
 
-/// Record columns, in order.
-inline constexpr std::string_view kColumnList =
+/// Record columns of version 1, in order.
+inline constexpr std::string_view kColumnListV1 =
     "step,time,sequence,frame_missing,encoder_right,encoder_left,ir_adc_front,ir_adc_rear,"
     "ir_valid_front,ir_valid_rear,v1,v2,truth_x,truth_y,truth_theta,x,y,theta,"
     "p_xx,p_xy,p_xtheta,p_yy,p_ytheta,p_thetatheta";
-inline constexpr int kColumnCount = 24;
+inline constexpr int kColumnCountV1 = 24;
+/// Record columns of the version written (2): version 1's, then the optional sensors'.
+inline constexpr std::string_view kColumnList =
+    "step,time,sequence,frame_missing,encoder_right,encoder_left,ir_adc_front,ir_adc_rear,"
+    "ir_valid_front,ir_valid_rear,v1,v2,truth_x,truth_y,truth_theta,x,y,theta,"
+    "p_xx,p_xy,p_xtheta,p_yy,p_ytheta,p_thetatheta,"
+    "gyro_raw,accel_right_forward,accel_right_left,accel_left_forward,accel_left_left,"
+    "compass_deg,beacons";
+inline constexpr int kColumnCount = 31;
+static_assert(kColumnList.starts_with(kColumnListV1));
+
+/// Separators inside the beacons cell: between the count and each sighting, and between a
+/// sighting's id and bearing.
+inline constexpr char kSightingSeparator = ';';
+inline constexpr char kIdBearingSeparator = ':';
 
 /// `x` shortest-round-trip; "nan", "inf", "-inf" for the non-finite.
 inline std::string number(double x) {

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <sstream>
 #include <utility>
 
@@ -168,6 +169,10 @@ class CellReader {
         return text == "1";
     }
     bool empty(int column) const { return cell(column).empty(); }
+    std::string_view text(int column) const { return cell(column); }
+    [[noreturn]] void fail(int column, const std::string& why) const {
+        reader_.fail(why, name(column), std::string(cell(column)));
+    }
     void require_empty(int column, const char* why) const {
         if (!empty(column)) {
             reader_.fail(why, name(column), std::string(cell(column)));
@@ -203,12 +208,97 @@ enum Column : int {
     kTruthY,
     kTruthTheta,
     kEstimate,  // x, y, theta, then P's upper triangle by rows
+    // Version 2: the optional sensors.
+    kGyro = format::kColumnCountV1,
+    kAccelRightForward,  // then right left, left forward, left left
+    kCompass = kAccelRightForward + 4,
+    kBeacons,
 };
+static_assert(kBeacons + 1 == format::kColumnCount);
 
-RunLogRecord parse_record(const LineReader& reader, std::string_view line) {
+/// The beacons cell: "<count>" then ";<id>:<bearing>" per sighting.
+BeaconScan parse_beacons(const CellReader& c) {
+    const std::string_view text = c.text(kBeacons);
+    std::size_t end = text.find(format::kSightingSeparator);
+    const auto count = format::parse<int>(text.substr(0, end));
+    if (!count || *count < 0 || *count > kMaxBeaconSightings) {
+        c.fail(kBeacons, "expected the sighting count (0 … " + std::to_string(kMaxBeaconSightings)
+                             + ") first, then \";id:bearing\" per sighting");
+    }
+    BeaconScan scan;
+    scan.count = static_cast<std::uint8_t>(*count);
+    for (int k = 0; k < *count; ++k) {
+        const std::string sighting_name = "sighting " + std::to_string(k + 1);
+        if (end == std::string_view::npos) {
+            c.fail(kBeacons, "the count says " + std::to_string(*count) + " sightings, "
+                                 + sighting_name + " is missing");
+        }
+        const std::size_t start = end + 1;
+        end = text.find(format::kSightingSeparator, start);
+        const std::string_view sighting = text.substr(start, end - start);
+        const std::size_t colon = sighting.find(format::kIdBearingSeparator);
+        const auto id = format::parse<std::uint8_t>(sighting.substr(0, colon));
+        if (colon == std::string_view::npos || !id) {
+            c.fail(kBeacons, sighting_name + " must be \"id:bearing\" with an id 0 … 255");
+        }
+        const auto bearing = format::parse<double>(sighting.substr(colon + 1));
+        if (!bearing) {  // non-finite ones ("nan", "inf") are kept: the replay must be exact
+            c.fail(kBeacons, sighting_name + ": the bearing is not a number");
+        }
+        scan.sightings[static_cast<std::size_t>(k)] = {*id, *bearing};
+    }
+    if (end != std::string_view::npos) {
+        c.fail(kBeacons, "more sightings than the count " + std::to_string(*count));
+    }
+    return scan;
+}
+
+/// Version 2's optional-sensor cells into `frame`; all empty in a record without a frame.
+void parse_optional_sensors(const CellReader& c, bool frame_missing, SensorFrame& frame) {
+    if (frame_missing) {
+        for (int column = kGyro; column <= kBeacons; ++column) {
+            c.require_empty(column, "must be empty in a record without a frame");
+        }
+        return;
+    }
+    frame.has_gyro = !c.empty(kGyro);
+    if (frame.has_gyro) {
+        frame.gyro_raw = c.get<std::int16_t>(kGyro);
+    }
+    int accel_cells = 0;
+    for (int i = 0; i < 4; ++i) {
+        accel_cells += c.empty(kAccelRightForward + i) ? 0 : 1;
+    }
+    if (accel_cells != 0 && accel_cells != 4) {
+        for (int i = 0; i < 4; ++i) {
+            if (c.empty(kAccelRightForward + i)) {
+                c.fail(kAccelRightForward + i,
+                       "the four accelerometer cells are either all empty or all set");
+            }
+        }
+    }
+    frame.has_accelerometers = accel_cells == 4;
+    if (frame.has_accelerometers) {
+        for (int i = 0; i < 4; ++i) {
+            frame.accel_raw[static_cast<std::size_t>(i / 2)][static_cast<std::size_t>(i % 2)] =
+                c.get<std::int16_t>(kAccelRightForward + i);
+        }
+    }
+    frame.has_compass = !c.empty(kCompass);
+    if (frame.has_compass) {
+        frame.compass_deg = c.get<std::int16_t>(kCompass);
+    }
+    frame.has_beacon_scan = !c.empty(kBeacons);
+    if (frame.has_beacon_scan) {
+        frame.beacons = parse_beacons(c);
+    }
+}
+
+RunLogRecord parse_record(const LineReader& reader, std::string_view line, int version) {
     const std::vector<std::string_view> cells = split(line);
-    if (static_cast<int>(cells.size()) != format::kColumnCount) {
-        reader.fail("a record has " + std::to_string(format::kColumnCount) + " cells, this line "
+    const int columns = version == 1 ? format::kColumnCountV1 : format::kColumnCount;
+    if (static_cast<int>(cells.size()) != columns) {
+        reader.fail("a record has " + std::to_string(columns) + " cells, this line "
                     + std::to_string(cells.size()));
     }
     const CellReader c(reader, cells);
@@ -246,6 +336,9 @@ RunLogRecord parse_record(const LineReader& reader, std::string_view line) {
             record.covariance(col, row) = record.covariance(row, col);
         }
     }
+    if (version >= 2) {
+        parse_optional_sensors(c, record.frame_missing, record.frame);
+    }
     return record;
 }
 
@@ -276,7 +369,7 @@ void read_records(LineReader& reader, RunLog& log) {
             log.ended = true;
             return;
         }
-        RunLogRecord record = parse_record(reader, line);
+        RunLogRecord record = parse_record(reader, line, log.header.version);
         if (!log.records.empty() && record.step != log.records.back().step + 1) {
             reader.fail("steps must follow each other (the previous was "
                             + std::to_string(log.records.back().step) + ")",
@@ -324,9 +417,11 @@ RunLog load_run_log(const std::filesystem::path& path) {
     log.header.link = header_value(reader, format::kLink);
     read_config(reader, log);
     const std::string columns = header_value(reader, format::kColumns);
-    if (columns != format::kColumnList) {
+    const std::string_view expected_columns =
+        log.header.version == 1 ? format::kColumnListV1 : format::kColumnList;
+    if (columns != expected_columns) {
         reader.fail("unexpected columns for format version " + std::to_string(log.header.version)
-                        + " (expected " + std::string(format::kColumnList) + ")",
+                        + " (expected " + std::string(expected_columns) + ")",
                     "columns", columns);
     }
     if (log.config.seed != log.header.seed) {

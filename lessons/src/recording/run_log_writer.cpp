@@ -48,6 +48,39 @@ std::size_t line_count(const std::string& text) {
            + (text.empty() || text.back() == '\n' ? 0 : 1);
 }
 
+/// The version-2 cells of the optional sensors, each with its leading comma: empty when the
+/// frame lacked the sensor (or there was no frame). docs/recording.md, "Optional sensors".
+std::string optional_sensor_cells(const SensorFrame& frame, bool frame_missing) {
+    if (frame_missing) {
+        return ",,,,,,,";
+    }
+    std::string cells;
+    const auto cell = [&cells](bool present, int value) {
+        cells += ',';
+        if (present) {
+            cells += std::to_string(value);
+        }
+    };
+    cell(frame.has_gyro, frame.gyro_raw);
+    for (const auto& unit : frame.accel_raw) {
+        for (const std::int16_t axis : unit) {
+            cell(frame.has_accelerometers, axis);
+        }
+    }
+    cell(frame.has_compass, frame.compass_deg);
+    cells += ',';
+    if (frame.has_beacon_scan) {
+        const int count = std::min<int>(frame.beacons.count, kMaxBeaconSightings);
+        cells += std::to_string(count);
+        for (int k = 0; k < count; ++k) {
+            const BeaconSighting& sighting = frame.beacons.sightings[static_cast<std::size_t>(k)];
+            cells += format::kSightingSeparator + std::to_string(sighting.id)
+                     + format::kIdBearingSeparator + format::number(sighting.bearing);
+        }
+    }
+    return cells;
+}
+
 }  // namespace
 
 RunLogWriter::RunLogWriter(const std::filesystem::path& path, const ResolvedRun& run,
@@ -118,6 +151,7 @@ void RunLogWriter::on_step(const LoopSnapshot& snapshot, const GroundTruth& trut
          {x(0), x(1), x(2), p(0, 0), p(0, 1), p(0, 2), p(1, 1), p(1, 2), p(2, 2)}) {
         line += ',' + number(value);
     }
+    line += optional_sensor_cells(frame, snapshot.frame_missing);
     out_ << line << '\n';
     ++records_;
     check("write to");

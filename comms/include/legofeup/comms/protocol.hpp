@@ -9,7 +9,8 @@
 //        6    2 length    u16, the whole packet in bytes, header included
 //        8    4 sequence  u32, counts the sender's packets on this stream
 //       12    8 time_us   u64, simulated time in microseconds
-//       20  ... payload   fixed for each type
+//       20  ... payload   fixed for each type (the sensor frame may carry an extension block
+//                         of the further lessons' sensors: 36 bytes, or 52 + 9 per sighting)
 //
 // All integers are little-endian, all reals IEEE-754 binary64 little-endian. Decoders never
 // trust a field: every malformation is reported as a DecodeError for the caller to count.
@@ -56,7 +57,22 @@ enum class PacketType : std::uint8_t {
 };
 
 /// The exact length of a packet of `type`, or 0 for a type this version does not know.
+/// For SensorFrame: the length of the plain frame (no extension block); see frame_size().
 std::size_t packet_size(PacketType type);
+
+/// The sensor frame's optional extension block (docs/protocol.md, "SensorFrame extension"):
+/// 16 fixed bytes after the plain 36-byte frame, then 9 bytes per beacon sighting.
+inline constexpr std::size_t kFrameExtensionOffset = 36;
+inline constexpr std::size_t kFrameSightingsOffset = 52;
+inline constexpr std::size_t kFrameSightingSize = 9;  ///< u8 id + f64 bearing
+
+/// The length of the sensor frame that carries `frame`: the plain 36 bytes when it has none
+/// of the optional sensors, else 52 + 9 × min(beacon count, kMaxBeaconSightings).
+std::size_t frame_size(const SensorFrame& frame);
+
+/// Whether `length` is a valid length field for `type`: packet_size(type) for every type;
+/// for SensorFrame also 52 + 9n, n = 0 … kMaxBeaconSightings.
+bool is_valid_length(PacketType type, std::size_t length);
 std::string_view to_string(PacketType type);
 
 /// Why a datagram was dropped. Each has a counter on the server and on the client.
@@ -233,7 +249,7 @@ struct ControlReplyPacket {
     std::string message;  ///< why it was rejected (at most 95 bytes travel)
 };
 
-// --- Encoding: each returns exactly packet_size(type) bytes. ---------------------------------
+// --- Encoding: each returns exactly packet_size(type) bytes (a sensor frame: frame_size()). ---
 
 using Bytes = std::vector<std::uint8_t>;
 
@@ -248,6 +264,10 @@ Bytes encode(const ControlReplyPacket& packet);
 // --- Decoding: None and the packet, or the first reason to drop it. --------------------------
 
 DecodeError decode(std::span<const std::uint8_t> datagram, FramePacket& packet);
+/// The same, and on failure `reason` says which field and which length were wrong (for logs
+/// and tests; e.g. "beacon count 3 needs length 79, the length field says 61").
+DecodeError decode(std::span<const std::uint8_t> datagram, FramePacket& packet,
+                   std::string& reason);
 DecodeError decode(std::span<const std::uint8_t> datagram, CommandPacket& packet);
 /// Takes Connect, Disconnect, TruthSubscribe and TruthUnsubscribe.
 DecodeError decode(std::span<const std::uint8_t> datagram, BarePacket& packet);

@@ -7,6 +7,7 @@
 
 #include "legofeup/core/follow_path.hpp"
 #include "legofeup/core/path_controllers.hpp"
+#include "legofeup/core/visit_waypoints.hpp"
 
 namespace legofeup {
 
@@ -22,14 +23,16 @@ class ManualDrive {
     VelocityCommand command_;
 };
 
-using Controller = std::variant<ManualDrive, GoXYTheta, FollowLine, FollowCircle, FollowPath>;
+using Controller =
+    std::variant<ManualDrive, GoXYTheta, FollowLine, FollowCircle, FollowPath, VisitWaypoints>;
 
 enum class ControllerKind : std::uint8_t {
     Manual,
     GoXYTheta,
     FollowLine,
     FollowCircle,
-    FollowPath
+    FollowPath,
+    VisitWaypoints
 };
 
 ControllerKind kind_of(const Controller& controller);
@@ -39,15 +42,17 @@ const char* to_string(ControllerKind kind);
 struct ControllerStatus {
     ControllerKind kind = ControllerKind::Manual;
     bool finished = false;
-    int segment = -1;  ///< FollowPath: index of the segment being followed
-    int lap = 0;       ///< FollowPath: laps completed
+    int segment = -1;  ///< FollowPath: segment being followed; VisitWaypoints: waypoint index
+    int lap = 0;       ///< FollowPath, VisitWaypoints: laps completed
     double cross_track_error = 0.0;
     double heading_error = 0.0;
 };
 
-/// Runs the active routine for one period and reports its command and status.
+/// Runs the active routine for one period (`period`, s: how long the command will be
+/// applied; the routines that wait, VisitWaypoints, count it) and reports its command and
+/// status.
 ControlOutput run_controller(Controller& controller, const Pose2& estimate,
                              const MotionLimits& limits, const ControllerGains& gains,
-                             ControllerStatus& status);
+                             double period, ControllerStatus& status);
 
 }  // namespace legofeup

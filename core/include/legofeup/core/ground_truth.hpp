@@ -20,6 +20,10 @@ struct GroundTruth {
     /// Distances the IR beams really measured at their last sample (before noise and A/D),
     /// m; the ray length when they saw nothing.
     std::array<double, 2> ir_distances{};
+    /// The gyroscope's true bias at this time, converted to rad/s (0 without a gyroscope).
+    double gyro_bias_rate = 0.0;
+    /// The compass disturbance field at the robot's position, rad (0 without one).
+    double magnetic_disturbance = 0.0;
 };
 
 }  // namespace legofeup

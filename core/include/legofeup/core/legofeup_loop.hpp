@@ -9,14 +9,21 @@
 // The loop knows nothing of where frames come from (simulator, UDP, NXT): it is a value-in /
 // value-out step that never allocates. Odometry-only, "direct" (R ≈ 0) and EKF operation are
 // settings of FilterTuning, not separate code paths.
+//
+// The further lessons replace what corrects the odometry (LessonFilters::localisation):
+// bearings to beacons (paper 002), the 5-state encoder + accelerometer + gyro EKF (paper 003)
+// or a compass with state-dependent odometry noise (paper 004). The pose filter is an EKF or
+// a UKF (a live setting); a "shadow" of the other kind can run on the same frames for
+// comparison. The speed estimators of paper 003 run beside every localisation.
 
 #include <vector>
 
-#include "legofeup/core/extended_kalman_filter.hpp"
+#include "legofeup/core/gyro_fusion_estimator.hpp"
 #include "legofeup/core/loop_config.hpp"
 #include "legofeup/core/loop_snapshot.hpp"
-#include "legofeup/core/pose_state_space.hpp"
+#include "legofeup/core/pose_filter.hpp"
 #include "legofeup/core/sensor_frame.hpp"
+#include "legofeup/core/speed_estimators.hpp"
 
 namespace legofeup {
 
@@ -52,16 +59,27 @@ class LegoFeupLoop {
 
     const LoopConfig& config() const { return config_; }
     const LoopSnapshot& snapshot() const { return snapshot_; }
-    const ExtendedKalmanFilter<PoseStateSpace>& filter() const { return filter_; }
+    const PoseFilter& filter() const { return filter_; }
 
   private:
     void apply_tuning();
-    void predict_from_encoders(const SensorFrame& frame);
-    void observe_and_update(const SensorFrame& frame);
+    void predict_from_encoders(const SensorFrame& frame, double period);
+    void predict_pose(PoseFilter& filter, const OdometryIncrement& increment);
+    void read_ir(const SensorFrame& frame);
+    void update_with_walls(PoseFilter& filter, bool primary);
+    void update_with_beacons(PoseFilter& filter, const SensorFrame& frame, bool primary);
+    void update_with_compass(PoseFilter& filter, const LoopSnapshot& s);
+    void run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict, bool primary);
+    void run_gyro_fusion(const SensorFrame* frame, double period);
     void control_and_publish();
+    bool uses_pose_filter() const;
 
     LoopConfig config_;
-    ExtendedKalmanFilter<PoseStateSpace> filter_;
+    PoseFilter filter_;
+    PoseFilter shadow_;  ///< the other kind, when lesson.compare_kinds
+    GyroFusionEstimator fusion_;
+    SpeedEstimators speeds_;
+    double last_time_ = 0.0;
     Controller controller_;
     Pose2 odometry_pose_;
     std::array<std::int32_t, 2> last_counts_{};
@@ -72,6 +90,7 @@ class LegoFeupLoop {
     Eigen::Matrix2d process_noise_ = Eigen::Matrix2d::Zero();  // Q
     Eigen::Matrix2d ir_noise_ = Eigen::Matrix2d::Zero();       // R
     MahalanobisGate gate_;
+    MahalanobisGate beacon_gate_;
 
     LoopSnapshot snapshot_;
 };

@@ -6,10 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "legofeup/core/beacons.hpp"
 #include "legofeup/core/config_issue.hpp"
 #include "legofeup/core/controller.hpp"
 #include "legofeup/core/covariance_guard.hpp"
 #include "legofeup/core/ir_geometry.hpp"
+#include "legofeup/core/lesson_filters_config.hpp"
 #include "legofeup/core/motion.hpp"
 #include "legofeup/core/odometry.hpp"
 #include "legofeup/core/sharp_ir.hpp"
@@ -47,6 +49,11 @@ struct LoopConfig {
     AssociationParams association;
     FilterTuning filter;
     InitialBelief initial;
+    /// The further lessons' estimators; `lesson.localisation` picks what corrects the
+    /// odometry (the walls by default).
+    LessonFilters lesson;
+    BeaconMap beacons;             ///< the filter's map of beacons (Localisation::Beacons)
+    double control_period = 0.05;  ///< Ts, s: the nominal period (frames carry their times)
     MotionLimits motion;
     ControllerGains gains;
     Controller controller = FollowPath(square_path(ArenaSpec{}), 0);

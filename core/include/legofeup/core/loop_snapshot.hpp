@@ -8,6 +8,7 @@
 #include "legofeup/core/controller.hpp"
 #include "legofeup/core/extended_kalman_filter.hpp"
 #include "legofeup/core/ir_geometry.hpp"
+#include "legofeup/core/lesson_filters_config.hpp"
 #include "legofeup/core/motion.hpp"
 #include "legofeup/core/odometry.hpp"
 #include "legofeup/core/sensor_frame.hpp"
@@ -24,6 +25,51 @@ struct IrSample {
 };
 
 using WallUpdateReport = UpdateReport<WallMeasurement::kSize, kStateSize>;
+
+/// One beacon bearing the filter processed (Localisation::Beacons).
+struct BeaconUpdate {
+    std::uint8_t id = 0;
+    bool known = false;      ///< the id is in the filter's beacon map (unknown ids are skipped)
+    double bearing = 0.0;    ///< measured, rad
+    double predicted = 0.0;  ///< h(X̂) before this update, rad
+    StepStatus status = StepStatus::NotAttempted;
+    double nis = 0.0;
+};
+
+struct BeaconUpdates {
+    std::uint8_t count = 0;  ///< updates[0 .. count) are valid (one per sighting)
+    std::array<BeaconUpdate, kMaxBeaconSightings> updates{};
+};
+
+/// Speeds as the lessons of paper 003 estimate them, m/s and rad/s.
+struct SpeedEstimates {
+    bool valid = false;  ///< false until two frames have been seen
+    /// Wheel surface speeds [right, left]: per-wheel KF (eq. 15–19) and differentiated encoders.
+    std::array<double, 2> wheel_kf{};
+    std::array<double, 2> wheel_differentiated{};
+    VelocityCommand body_encoders;  ///< (v, ω) from differentiated encoders (eq. 14)
+    bool body_kf_valid = false;     ///< the frame had accelerometers
+    VelocityCommand body_kf;        ///< (v, ω) of the KF with accelerometer inputs (eq. 20–23)
+};
+
+/// The optional sensors converted to SI units (when the frame had them).
+struct ExtraReadings {
+    bool has_gyro = false;
+    double gyro_rate = 0.0;     ///< rad/s, calibrated (offset removed)
+    double gyro_heading = 0.0;  ///< rad, the gyro rate integrated from the initial heading
+    bool has_accelerometers = false;
+    std::array<double, 2> accel_forward{};  ///< m/s² [right unit, left unit]
+    bool has_compass = false;
+    double compass_heading = 0.0;  ///< rad in (−π, π]
+};
+
+/// The other filter kind run on the same frames for comparison (LessonFilters::compare_kinds).
+struct ShadowEstimate {
+    bool active = false;
+    FilterKind kind = FilterKind::Ukf;
+    StateVector estimate = StateVector::Zero();
+    StateCovariance covariance = StateCovariance::Zero();
+};
 
 struct LoopSnapshot {
     std::uint64_t step = 0;      ///< frames processed since the last reset (1 for the first)
@@ -44,12 +90,26 @@ struct LoopSnapshot {
     bool odometry_glitch = false;  ///< encoder jump beyond max_wheel_travel_per_step: skipped
     StepStatus predict_status = StepStatus::NotAttempted;
 
+    Localisation localisation = Localisation::Walls;
+    FilterKind filter_kind = FilterKind::Ekf;
+    /// 5-state fusion only: the estimated (v, ω) of the state.
+    VelocityCommand fused_velocity;
+
     // Observation and association modules.
     std::array<IrSample, kIrSensorCount> ir{};
     bool observation_available = false;  ///< both readings in range
     WallObservation observation;         ///< eq. 3 (valid when observation_available)
     AssociationResult association;       ///< outcome NoObservation when there was none
     WallUpdateReport update;             ///< status NotAttempted when no update ran
+
+    BeaconUpdates beacons;  ///< Localisation::Beacons
+    ExtraReadings readings;
+    SpeedEstimates speeds;
+    ShadowEstimate shadow;
+    /// Wall-clock seconds this step spent in the pose filter's predict and updates, and in the
+    /// shadow filter's (machine-dependent: shown, never graded).
+    double filter_seconds = 0.0;
+    double shadow_filter_seconds = 0.0;
 
     // Control module.
     ControllerStatus controller;

@@ -23,6 +23,11 @@ struct Experiment {
 const std::vector<Experiment>& legofeup_experiments();
 
 /// The experiment with this id, or nullptr.
+/// The LegoFeup steps ("a" … "f") and every other built-in lesson's steps as
+/// "<lesson>:<step>" ("beacons:a", "compass:c", …): what --experiment accepts.
+const std::vector<Experiment>& all_experiments();
+
+/// An experiment of all_experiments() by id, or nullptr.
 const Experiment* find_experiment(std::string_view id);
 
 }  // namespace legofeup::lessons

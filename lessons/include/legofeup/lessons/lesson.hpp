@@ -97,7 +97,19 @@ Lesson load_lesson_file(const std::filesystem::path& path);
 /// The built-in LegoFeup lesson (resources/lessons/legofeup.toml, steps a–f), parsed once.
 const Lesson& legofeup_lesson();
 
-/// "legofeup" (the built-in lesson) or the path of a lesson file.
+/// The lessons that ship with the program, in the order menus list them (an explicit list:
+/// no self-registration).
+struct BuiltInLesson {
+    std::string id;  ///< "legofeup", "beacons", "speeds", "compass"
+    std::string title;
+    std::string resource_path;  ///< where it lives in the source tree, for the record
+};
+const std::vector<BuiltInLesson>& built_in_lessons();
+
+/// A built-in lesson by id, parsed once; nullptr if there is none.
+const Lesson* find_built_in_lesson(std::string_view id);
+
+/// A built-in lesson's id or the path of a lesson file.
 Lesson find_lesson(const std::string& name_or_path);
 
 /// The metric names a check may refer to (those of summary.json's "metrics").

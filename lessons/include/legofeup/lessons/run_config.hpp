@@ -17,8 +17,22 @@ namespace legofeup::lessons {
 
 /// The control routine and its parameters (the [control] section).
 struct RoutineSpec {
-    enum class Kind : std::uint8_t { Square, Line, Circle, Goto, Manual };
+    /// Shuttle: back and forth between line_from and line_to (`laps` times); Piecewise: the
+    /// world's square corners with a stop of `pause` s at each (paper 004); Random:
+    /// `random_points` random places inside the square path, drawn from the run's seed.
+    enum class Kind : std::uint8_t {
+        Square,
+        Line,
+        Circle,
+        Goto,
+        Manual,
+        Shuttle,
+        Piecewise,
+        Random
+    };
     Kind kind = Kind::Square;
+    double pause = 0.0;     ///< s stopped at each waypoint (shuttle, piecewise, random)
+    int random_points = 8;  ///< random: how many places to visit
     Vector2 line_from{-1.0, -1.0};
     Vector2 line_to{1.0, -1.0};
     Vector2 circle_centre{0.0, 0.0};
@@ -63,6 +77,8 @@ struct RunConfig {
     std::string world_file;  ///< empty: the built-in standard arena
 
     FilterTuning filter;
+    /// The further lessons: localisation, EKF/UKF, their filters' tunings and calibration.
+    LessonFilters lesson;
     InitialBelief initial;      ///< P0; its pose is the world's start with `initial_pose`
     PoseOverride initial_pose;  ///< where the filter believes the robot starts
     RoutineSpec routine;

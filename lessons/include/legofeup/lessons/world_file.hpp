@@ -1,6 +1,7 @@
 #pragma once
-// World files (TOML): walls, the start pose and the square path. resources/worlds/ has the
-// standard arena; docs/configuration.md describes the format.
+// World files (TOML): walls, the start pose, the square path, bearing-only beacons and the
+// compass's magnetic disturbance. resources/worlds/ has the standard arena;
+// docs/configuration.md and docs/sensors.md describe the format.
 
 #include <filesystem>
 #include <string>

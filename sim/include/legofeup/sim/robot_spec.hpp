@@ -9,6 +9,7 @@
 #include "legofeup/core/ir_geometry.hpp"
 #include "legofeup/core/loop_config.hpp"
 #include "legofeup/core/sharp_ir.hpp"
+#include "legofeup/sim/sensor_specs.hpp"
 
 namespace legofeup::sim {
 
@@ -41,6 +42,12 @@ struct RobotSpec {
     double ir_noise = 0.0;       ///< σ of Gaussian noise on each IR distance, m
     double ir_period = 0.038;    ///< a new reading every 38 ms, held in between, s
     double ir_ray_length = 0.8;  ///< beyond this the sensor sees nothing, m
+
+    // The further lessons' sensors (docs/sensors.md), all off by default.
+    BeaconScannerSpec beacon_scanner;
+    GyroSpec gyro;
+    AccelerometerSpec accelerometers;
+    CompassSpec compass;
 
     /// Actual diameters of the right and left wheels from the average and E_d.
     double right_wheel_diameter() const;

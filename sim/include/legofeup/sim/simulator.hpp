@@ -21,6 +21,18 @@ namespace legofeup::sim {
 struct SimulatorSettings {
     double physics_rate = 100.0;   ///< Hz; the physics step is 1/physics_rate
     double control_period = 0.05;  ///< s; a whole number of physics steps
+
+    /// A sudden change of the robot's position (paper 002's kidnapping): at the start of the
+    /// first control period whose end time is ≥ `time`, the robot is moved by (dx, dy) m and
+    /// turned by dtheta rad in world coordinates, at rest (teleport); the encoders do not see
+    /// it. Once per run (again after a reset).
+    struct DisplacementEvent {
+        bool enabled = false;
+        double time = 0.0;    ///< s
+        double dx = 0.0;      ///< m
+        double dy = 0.0;      ///< m
+        double dtheta = 0.0;  ///< rad
+    } displacement;
 };
 
 /// Everything wrong with the settings; fields are named "simulator.<name>".
@@ -28,7 +40,7 @@ std::vector<ConfigIssue> validate(const SimulatorSettings& settings);
 
 class Simulator {
   public:
-    /// Throws std::invalid_argument if the robot spec or settings do not validate.
+    /// Throws std::invalid_argument if the world, robot spec or settings do not validate.
     Simulator(WorldSpec world, RobotSpec robot, SimulatorSettings settings, std::uint64_t seed);
     ~Simulator();
     Simulator(const Simulator&) = delete;

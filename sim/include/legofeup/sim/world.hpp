@@ -5,11 +5,27 @@
 #include <string>
 #include <vector>
 
+#include "legofeup/core/beacons.hpp"
+#include "legofeup/core/config_issue.hpp"
 #include "legofeup/core/follow_path.hpp"
 #include "legofeup/core/state.hpp"
 #include "legofeup/core/walls.hpp"
 
 namespace legofeup::sim {
+
+/// A smooth indoor disturbance of the compass heading (steel in the floor, cables, radiators:
+/// paper 004), as a field over the floor. It is the sum of three plane waves of the same
+/// wavelength travelling at 0°, 60° and 120° with fixed phases (docs/sensors.md):
+///   d(p) = A/3 · [sin(k·e₀·p) + sin(k·e₆₀·p) + cos(k·e₁₂₀·p)],  k = 2π/λ,
+/// whose largest |d| over the plane is exactly A.
+struct MagneticDisturbance {
+    double amplitude_deg = 0.0;  ///< A: the largest heading error it causes, ° (0 = none)
+    double wavelength = 3.0;     ///< λ, m: how fast it varies across the floor
+};
+
+/// The disturbance d(p) of the compass heading at `position`, degrees (added to the true
+/// heading). Smooth: |∇d| ≤ A·2π/λ per metre.
+double magnetic_disturbance_deg(const MagneticDisturbance& field, const Vector2& position);
 
 /// A world: named walls (thin, two-sided, reflecting exactly on their line), the robot's
 /// usual start pose and the path the standard routine follows there.
@@ -21,9 +37,20 @@ struct WorldSpec {
     /// from its lower-left corner.
     double path_side = 2.0;
     Vector2 path_centre = Vector2::Zero();
+    /// Bearing-only beacons the scanner can see (ids 0–255, unique); none by default.
+    BeaconMap beacons;
+    /// The compass's disturbance field; none by default.
+    MagneticDisturbance magnetic;
 };
 
-/// The standard LegoFeup arena of the paper, built from the scenario's numbers. Runs read it
+/// Everything wrong with a world the simulator would run in: duplicate beacon ids, ids
+/// outside 0–255, non-finite positions, a negative amplitude or non-positive wavelength.
+/// Fields are named "world.beacon[<i>].id", "world.magnetic.amplitude_deg", ...
+std::vector<ConfigIssue> validate(const WorldSpec& world);
+
+/// The standard LegoFeup arena of the paper, built from the scenario's numbers, with four
+/// beacons (ids 1–4, 0.1 m inside the corners of the walls' bounding box, counter-clockwise
+/// from the lower left) and a 12° magnetic disturbance of 3 m wavelength. Runs read it
 /// from resources/worlds/standard_arena.toml (lessons::built_in_world); a test keeps the two
 /// the same.
 WorldSpec standard_arena();

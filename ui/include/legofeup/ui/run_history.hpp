@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "legofeup/core/beacons.hpp"
 #include "legofeup/core/follow_path.hpp"
 #include "legofeup/core/ground_truth.hpp"
 #include "legofeup/core/ir_geometry.hpp"
@@ -36,6 +37,8 @@ struct ArenaScene {
     IrMount ir_mount;               ///< where the IR sensors sit, to draw their rays
     double ir_max_range = 0.8;      ///< m: the trusted IR range
     double control_period = 0.05;   ///< s
+    /// The world's bearing-only beacons (paper 002) when the run localises with them.
+    BeaconMap beacons;
 };
 
 class RunHistory {

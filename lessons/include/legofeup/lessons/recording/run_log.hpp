@@ -26,8 +26,10 @@ namespace legofeup::lessons {
 
 /// First line of every run log: "legofeup-run-log <version>".
 inline constexpr const char* kRunLogFormat = "legofeup-run-log";
-/// The version this program writes and the newest it reads.
-inline constexpr int kRunLogVersion = 1;
+/// The version this program writes and the newest it reads (it reads every older one too).
+/// Version 2 added the optional sensors of SensorFrame (gyro, accelerometers, compass,
+/// beacon scan); a version-1 log reads as frames without them.
+inline constexpr int kRunLogVersion = 2;
 
 /// What the header says about the run, besides its configuration.
 struct RunLogHeader {
@@ -132,7 +134,8 @@ class RunLogWriter final : public RunObserver {
 /// last line cut off mid-write (no final newline) is tolerated: see RunLog::truncated.
 RunLog load_run_log(const std::filesystem::path& path);
 
-/// The column names of a record line, comma-separated (documented in docs/recording.md).
+/// The column names of a record line of the version written, comma-separated (documented
+/// in docs/recording.md).
 const char* run_log_columns();
 
 }  // namespace legofeup::lessons

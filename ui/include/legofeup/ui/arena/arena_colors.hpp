@@ -24,6 +24,8 @@ struct ArenaColors {
     QColor associated;    ///< IR rays used by an update, and the wall they were matched to
     QColor rejected;      ///< IR rays measured but not used
     QColor out_of_range;  ///< IR rays that saw nothing within range
+    QColor beacon;        ///< bearing-only beacons (paper 002) and their ids
+    QColor shadow;        ///< the other filter kind's estimate run beside it (EKF vs UKF)
     QColor label_background;
 };
 

@@ -12,6 +12,7 @@
 #include <QTransform>
 #include <vector>
 
+#include "legofeup/core/beacons.hpp"
 #include "legofeup/core/loop_snapshot.hpp"
 #include "legofeup/core/walls.hpp"
 #include "legofeup/ui/arena/arena_cache.hpp"
@@ -37,7 +38,7 @@ struct RobotOutline {
 
 /// One line of the legend: a swatch (line, dashed line or filled box) and its text.
 struct LegendEntry {
-    enum class Swatch { Line, Dashed, Ellipse, Band };
+    enum class Swatch { Line, Dashed, Ellipse, DashedEllipse, Band, Diamond };
     Swatch swatch = Swatch::Line;
     QColor color;
     QString text;
@@ -61,6 +62,16 @@ class ArenaPainter {
     /// The estimate: a dot and an arrow along its heading.
     void estimate_marker(const Pose2& pose);
 
+    // The further lessons' layers (arena_painter_lessons.cpp).
+    /// Each beacon: a filled diamond and its id.
+    void beacons(const BeaconMap& beacons);
+    /// This step's bearings from the estimated pose: the measured one along θ̂ + z (solid,
+    /// coloured as the IR rays: applied or not), the expected one along θ̂ + h(X̂) (faint,
+    /// dashed). Each is drawn a little past the distance to its beacon.
+    void beacon_rays(const LoopSnapshot& snapshot, const BeaconMap& beacons);
+    /// The other filter kind's estimate: its ellipse (dashed) and its heading arrow.
+    void shadow_estimate(const Pose2& pose, const CovarianceEllipse& ellipse);
+
     // Widget-pixel layers.
     void wall_names(const std::vector<Wall>& walls, const QRectF& arena);
     /// A text in a box whose bottom-left corner is at `anchor` (kept inside the widget).
@@ -71,6 +82,7 @@ class ArenaPainter {
     void centred_text(const QString& text, const QRectF& widget);
 
   private:
+    void heading_marker(const Pose2& pose, const QColor& color);
     QPen pen(const QColor& color, double width, Qt::PenStyle style = Qt::SolidLine) const;
     void use_world();
     void use_widget();
@@ -79,6 +91,17 @@ class ArenaPainter {
     QTransform world_to_widget_;
     const ArenaStyle& style_;
 };
+
+/// A bearing drawn from a pose: from (x, y) along θ + bearing, `length` metres.
+struct BearingRay {
+    Vector2 from = Vector2::Zero();
+    Vector2 to = Vector2::Zero();
+};
+BearingRay bearing_ray(const Pose2& pose, double bearing, double length);
+
+/// How long a beacon's rays are drawn from `pose`: 15 % past the beacon, so a ray that
+/// misses it shows by how much (at least 0.1 m).
+double beacon_ray_length(const Pose2& pose, const Beacon& beacon);
 
 /// The legend's box for these entries (texts may hold line breaks).
 QSizeF legend_size(const std::vector<LegendEntry>& entries, const QFont& font);

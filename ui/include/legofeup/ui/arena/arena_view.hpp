@@ -15,6 +15,7 @@
 #include <QPointF>
 #include <QRectF>
 #include <QString>
+#include <QStringList>
 #include <QTransform>
 #include <QWidget>
 
@@ -71,6 +72,8 @@ class ArenaView : public QWidget {
     qsizetype cachedPathPointCount() const;
     /// Ellipses in the cached trail.
     int trailEllipseCount() const;
+    /// The legend's texts, top to bottom, as drawn now.
+    QStringList legendTexts() const;
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
@@ -126,6 +129,7 @@ class ArenaView : public QWidget {
     bool show_legend_ = true;
     bool show_frame_times_ = false;
     double text_scale_ = 1.0;
+    QSizeF legend_size_;  ///< the legend's size at the last fit
     bool fitted_ = true;  ///< the view shows the fitted arena: refit when resized
     bool dragging_ = false;
     QPointF drag_last_;

@@ -51,7 +51,9 @@ class LessonPanel : public QWidget {
     /// Reads a teacher's lesson and switches to it. Returns "" or every problem (file:line,
     /// reason); on error the current lesson stays.
     QString openLesson(const QString& path);
-    void useBuiltInLesson();
+    /// Switches to the built-in lesson `id` (lessons::built_in_lessons(): "legofeup",
+    /// "beacons", …); an unknown id gives the LegoFeup lesson.
+    void useBuiltInLesson(const QString& id = QStringLiteral("legofeup"));
 
     /// Writes the submission (names, answers, the graded step's tuning as the configuration
     /// has it now). Returns "" or why not.
@@ -86,7 +88,7 @@ class LessonPanel : public QWidget {
 
     Session& session_;
     std::unique_ptr<LessonProgress> progress_;
-    QString lesson_file_;  ///< empty: the built-in lesson
+    QString lesson_file_;  ///< "builtin:<id>" for a built-in lesson, else the file's path
     StepRunTracker* tracker_ = nullptr;
     QComboBox* lesson_choice_ = nullptr;
     QLabel* lesson_title_ = nullptr;

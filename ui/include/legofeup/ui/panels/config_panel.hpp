@@ -8,6 +8,8 @@
 #include <map>
 #include <string>
 
+#include "legofeup/core/lesson_filters_config.hpp"
+
 class QLabel;
 class QToolBox;
 
@@ -27,9 +29,14 @@ class ConfigPanel : public QWidget {
     /// The message last shown (what was applied, or why an entry was refused).
     QString message() const;
     bool messageIsError() const { return message_is_error_; }
+    /// Whether the setting's row is enabled: the current localisation uses it
+    /// (setting_relevance.hpp). False for an unknown key.
+    bool isRelevant(const std::string& key) const;
 
   private:
     void refresh();
+    /// Greys the rows (and pages) of settings `localisation` does not use.
+    void showRelevance(Localisation localisation);
     void showMessage(const QString& text, bool error);
 
     Session& session_;
@@ -37,6 +44,12 @@ class ConfigPanel : public QWidget {
     bool message_is_error_ = false;
     QToolBox* pages_ = nullptr;
     std::map<std::string, SettingEditor*> editors_;
+    struct Row {
+        QWidget* label = nullptr;
+        QWidget* field = nullptr;
+        int page = 0;
+    };
+    std::map<std::string, Row> rows_;
 };
 
 }  // namespace legofeup::ui

@@ -20,8 +20,15 @@ enum class PlotKind : int {
     IrDistances,    ///< ds1, ds2 as measured (gaps when out of range)
     Nis,            ///< NIS of each wall update with the χ²(2) 95 % bounds, log scale
     Nees,           ///< NEES with the χ²(3) 95 % bounds, log scale
+    // The further lessons' plots (papers 002–004): shown only once the run has their data.
+    Bearings,             ///< beacon bearing innovations z − h(X̂), applied and gated
+    HeadingSensors,       ///< heading errors against the truth: estimate, gyro, compass
+    TurnRate,             ///< ω: truth, gyroscope, encoders, the 5-state EKF
+    WheelSpeedEstimates,  ///< wheel surface speeds: truth, per-wheel KF, differentiated encoders
+    ShadowError,          ///< position error of the EKF and of the UKF run side by side
+    FilterCost,           ///< wall-clock µs per step of each filter, smoothed
 };
-inline constexpr int kPlotKindCount = 7;
+inline constexpr int kPlotKindCount = 13;
 
 /// Every drawn series. The order is the drawing order within a plot: bands first, so the
 /// lines sit on top of them.
@@ -46,8 +53,30 @@ enum class Series : int {
     Ds2,
     Nis,
     Nees,
+    BearingApplied,
+    BearingGated,
+    HeadingErrorEstimate,
+    HeadingErrorGyro,
+    HeadingErrorCompass,
+    TurnRateTrue,
+    TurnRateGyro,
+    TurnRateEncoders,
+    TurnRateFused,
+    WheelRightTrue,
+    WheelLeftTrue,
+    WheelRightKf,
+    WheelLeftKf,
+    WheelRightDifferentiated,
+    WheelLeftDifferentiated,
+    EkfPositionError,
+    UkfPositionError,
+    EkfCost,
+    UkfCost,
 };
-inline constexpr int kSeriesCount = 20;
+inline constexpr int kSeriesCount = 39;
+
+/// At most this many points of one series per sample (one per beacon sighting).
+inline constexpr int kMaxPointsPerSample = kMaxBeaconSightings;
 
 enum class SeriesLook : std::uint8_t {
     Line,
@@ -65,11 +94,17 @@ struct PlotDefinition {
     const char* file_stem;   ///< exported file name without its extension
     bool log_y;              ///< logarithmic y axis (values ≤ 0 are not drawn)
     int chi_square_dof = 0;  ///< > 0: the plot shows the two-sided 95 % bounds of χ²(dof)
+    /// Shown only once one of its series has a point (the further lessons' sensors and the
+    /// side-by-side filters); the others are always shown.
+    bool optional = false;
 };
 
 /// The value of a series at one sample: nullopt adds no point (NIS without an update), NaN
 /// adds a gap in the line (an IR reading out of range, an error without truth).
 using SeriesValue = std::optional<double> (*)(const RunSample&);
+/// Several values of a series at one sample (one per beacon sighting): writes them to `out`
+/// and returns how many.
+using SeriesValues = int (*)(const RunSample&, std::span<double, kMaxPointsPerSample> out);
 
 struct SeriesDefinition {
     Series series;
@@ -79,6 +114,11 @@ struct SeriesDefinition {
     int colour;  ///< index into the plot colours' series set (plot_style.hpp)
     SeriesLook look;
     Series fill_to;  ///< Band: the BandEdge it is filled to (otherwise the series itself)
+    /// When set, used instead of `value`: several points per sample.
+    SeriesValues values = nullptr;
+    /// Exponential smoothing of the drawn value, s = s + a·(v − s) with a = `smoothing`
+    /// (0: none). For noisy timings only.
+    double smoothing = 0.0;
 };
 
 const PlotDefinition& plot_definition(PlotKind kind);

@@ -51,11 +51,19 @@ class PlotsPanel : public QWidget {
     QCustomPlot* plot(PlotKind kind) const;
     /// The graph drawing `series`.
     QCPGraph* graph(Series series) const;
+    /// Whether the plot of `kind` is shown: always for the wall lesson's plots, once one of
+    /// its series has a point for the further lessons' (PlotDefinition::optional).
+    bool plotShown(PlotKind kind) const;
     /// The χ² 95 % bound lines of the Nis and Nees plots (nullptr for the other plots).
     QCPItemStraightLine* boundLine(PlotKind kind, BoundSide side) const;
     /// Whether the plots that need the truth (errors, NEES) say the run has none (a real
     /// robot): its latest sample came without truth.
     bool showsNoTruth() const { return no_truth_shown_; }
+
+    /// The tab chosen last (by a click or setWantedTab()): shown whenever it has a plot.
+    int wantedTab() const { return wanted_tab_; }
+    /// Shows tab `index` now, or once it has data (a lesson's tab before its run starts).
+    void setWantedTab(int index);
 
     /// Seconds of history shown; 0 = the whole run.
     double timeWindow() const { return time_window_; }
@@ -98,6 +106,8 @@ class PlotsPanel : public QWidget {
     void onBeforeReplot(PlotKind kind);
     void onAfterReplot();
     void showNoTruth(bool shown);
+    /// Shows the optional plots that have data, and the tabs with a plot shown.
+    void showPresentPlots();
 
     const RunHistory& history_;
     std::uint64_t epoch_ = 0;
@@ -112,6 +122,8 @@ class PlotsPanel : public QWidget {
     std::array<QCustomPlot*, kPlotKindCount> plots_{};
     std::array<QCPGraph*, kSeriesCount> graphs_{};
     std::array<ValueRange, kSeriesCount> extents_{};  ///< every value since the restart
+    std::array<double, kSeriesCount> smoothed_{};     ///< SeriesDefinition::smoothing's state
+    std::array<bool, kSeriesCount> has_points_{};     ///< a point since the restart
     /// Each graph's pen and fill from the look, used while few enough points are in view.
     std::array<QPen, kSeriesCount> pens_{};
     std::array<QBrush, kSeriesCount> brushes_{};
@@ -125,6 +137,7 @@ class PlotsPanel : public QWidget {
     /// "No ground truth" on the plots that need it; nullptr on the others.
     std::array<QCPItemText*, kPlotKindCount> no_truth_{};
     bool no_truth_shown_ = false;
+    int wanted_tab_ = 0;
 
     std::array<bool, kPlotKindCount> stale_{};           ///< changed while hidden
     std::array<bool, kPlotKindCount> replot_pending_{};  ///< queued, not yet run

@@ -37,6 +37,8 @@ inline const Preference<bool> kFollowRobot{"view/followRobot", false};
 inline const Preference<bool> kShowFrameTimes{"view/showFrameTimes", false};
 /// Seconds of history in the plots; 0: the whole run.
 inline const Preference<double> kPlotWindow{"view/plotWindow", 60.0};
+/// The plots' tab chosen last (PlotsPanel::wantedTab()).
+inline const Preference<int> kPlotTab{"view/plotTab", 0};
 /// 0: embedded, 1: external, 2: NXT (LinkKind).
 inline const Preference<int> kLinkKind{"link/kind", 0};
 inline const Preference<QString> kLinkAddress{"link/address",

@@ -1,0 +1,118 @@
+#pragma once
+// The settings of the further lessons' estimators (papers 002, 003, 004): which localisation
+// the loop runs, EKF or UKF, and each filter's noise model and sensor calibration. Part of
+// LoopConfig; validated with it. Units are SI unless a field says otherwise; the wheel-speed
+// filter keeps the paper's degree units so its numbers match eq. 19.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "legofeup/core/angles.hpp"
+
+namespace legofeup {
+
+/// What corrects the odometry prediction.
+enum class Localisation : std::uint8_t {
+    Walls,       ///< the LegoFeup lesson: two IR sensors and the four walls (paper 000)
+    Beacons,     ///< bearing-only beacons (paper 002)
+    GyroFusion,  ///< 5-state EKF [x, y, θ, v, ω]: encoders, accelerometers, gyroscope (paper 003
+                 ///< §3.4)
+    Compass,     ///< odometry with state-dependent noise + magnetic compass (paper 004)
+};
+const char* to_string(Localisation localisation);
+/// The inverse of to_string ("walls", "beacons", "gyro_fusion", "compass"); nullopt otherwise.
+std::optional<Localisation> localisation_from_string(std::string_view text);
+
+/// The Gaussian filter that runs the pose estimate (Walls, Beacons and Compass).
+enum class FilterKind : std::uint8_t { Ekf, Ukf };
+const char* to_string(FilterKind kind);
+/// The inverse of to_string ("ekf", "ukf"); nullopt otherwise.
+std::optional<FilterKind> filter_kind_from_string(std::string_view text);
+
+/// Unscented transform spread: sigma points at ±√((n+κ)·P) with weights κ/(n+κ) and
+/// 1/(2(n+κ)) (paper 002 eq. 11–13); n is the (augmented) dimension, n + κ > 0 required.
+struct UkfParams {
+    double kappa = 0.0;
+};
+
+/// Bearing-only beacon updates (paper 002).
+struct BeaconTuning {
+    /// Variance of one bearing, rad²: the paper's simulated π/8.
+    double r_bearing = kPi / 8.0;
+    bool gate_enabled = false;  ///< reject bearings whose NIS exceeds the χ²(1) gate
+    double gate_probability = 0.99;
+};
+
+/// The per-wheel linear KF for wheel speed (paper 003 eq. 15–19): state [θ_wheel (°),
+/// ω_wheel (°/s)], constant-rate model over the control period, encoder angle measured.
+struct WheelSpeedKfTuning {
+    double q_angle = 0.1;  ///< Q₁₁, °² per period
+    double q_rate = 10.0;  ///< Q₂₂, (°/s)² per period
+    double r_right = 2.5;  ///< R of the right encoder, °²
+    double r_left = 1.5;   ///< R of the left encoder, °²
+    double p0 = 10.0;      ///< P0 = p0·I
+};
+
+/// The defaults are our robot's: the accelerometers' noise (≈2 counts, 0.1 m/s²) over one
+/// 50 ms period gives Q; one count of encoder quantisation at each end of the period (plus
+/// the sampling jitter) gives R. The paper's numbers are in its own, unstated units.
+/// The KF for the body velocities with accelerometer inputs (paper 003 eq. 20–23):
+/// state [v (m/s), ω (rad/s)], input [a, α] from the two accelerometers, measurement
+/// [v, ω] from differentiated encoders (eq. 14).
+struct VelocityKfTuning {
+    double q_v = 2e-5;  ///< Q₁₁, (m/s)² per period
+    double q_w = 4e-3;  ///< Q₂₂, (rad/s)² per period
+    double r_v = 2e-5;  ///< R₁₁, (m/s)² of the encoder speed
+    double r_w = 3e-3;  ///< R₂₂, (rad/s)² of the encoder turn rate
+    double p0 = 1e-2;   ///< P0 = p0·I
+};
+
+/// The 5-state EKF [x, y, θ, v, ω] (paper 003 §3.4, eq. 24–26).
+struct GyroFusionTuning {
+    double q_position = 1e-8;        ///< per period, m² (model error of x and y)
+    double q_heading = 1e-7;         ///< per period, rad²
+    double q_v = 2e-5;               ///< per period, (m/s)²
+    double q_w = 4e-3;               ///< per period, (rad/s)²
+    double r_v_encoders = 2e-5;      ///< (m/s)² of the encoder speed
+    double r_w_encoders = 3e-3;      ///< (rad/s)² of the encoder turn rate
+    double r_w_gyro = 3e-4;          ///< (rad/s)² of the gyroscope rate
+    bool use_gyro = true;            ///< false: encoders (and accelerometers) only
+    bool use_accelerometers = true;  ///< false: constant-velocity prediction
+};
+
+/// Odometry with state-dependent noise and a compass (paper 004 eq. 5 and 11).
+struct CompassTuning {
+    /// eq. 5: Q = diag(k_D·|ΔD·cos θ|, k_D·|ΔD·sin θ|, k_Dθ·|ΔD| + k_θ·|Δθ|), added to the
+    /// pose each period (units m, m, rad² per m and rad² per rad).
+    double k_d = 1e-4;
+    double k_dtheta = 1e-3;
+    double k_theta = 1e-3;
+    double r_compass = degrees_to_radians(8.0) * degrees_to_radians(8.0);  ///< rad²
+    bool use_compass = true;  ///< false: odometry only (the P still grows)
+};
+
+/// How raw extra sensors become SI units, as the filters believe them to be calibrated.
+struct ExtraSensorCalibration {
+    double gyro_offset = 600.0;        ///< raw value at rest, counts
+    double gyro_counts_per_dps = 1.0;  ///< counts per °/s
+    double accel_counts_per_g = 200.0;
+    double gravity = 9.80665;  ///< m/s²
+};
+
+struct LessonFilters {
+    Localisation localisation = Localisation::Walls;
+    FilterKind kind = FilterKind::Ekf;
+    /// Also run the other filter kind on the same frames, for comparison only (its estimate
+    /// never drives the robot): EKF and UKF side by side on one noise realisation.
+    bool compare_kinds = false;
+    UkfParams ukf;
+    BeaconTuning beacons;
+    WheelSpeedKfTuning wheel_speed;
+    VelocityKfTuning velocity;
+    GyroFusionTuning gyro_fusion;
+    CompassTuning compass;
+    ExtraSensorCalibration calibration;
+};
+
+}  // namespace legofeup

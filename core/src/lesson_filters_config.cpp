@@ -1,0 +1,48 @@
+#include "legofeup/core/lesson_filters_config.hpp"
+
+namespace legofeup {
+
+const char* to_string(Localisation localisation) {
+    switch (localisation) {
+        case Localisation::Walls:
+            return "walls";
+        case Localisation::Beacons:
+            return "beacons";
+        case Localisation::GyroFusion:
+            return "gyro_fusion";
+        case Localisation::Compass:
+            return "compass";
+    }
+    return "unknown";
+}
+
+const char* to_string(FilterKind kind) {
+    switch (kind) {
+        case FilterKind::Ekf:
+            return "ekf";
+        case FilterKind::Ukf:
+            return "ukf";
+    }
+    return "unknown";
+}
+
+std::optional<Localisation> localisation_from_string(std::string_view text) {
+    for (const Localisation value : {Localisation::Walls, Localisation::Beacons,
+                                     Localisation::GyroFusion, Localisation::Compass}) {
+        if (text == to_string(value)) {
+            return value;
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<FilterKind> filter_kind_from_string(std::string_view text) {
+    for (const FilterKind value : {FilterKind::Ekf, FilterKind::Ukf}) {
+        if (text == to_string(value)) {
+            return value;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace legofeup

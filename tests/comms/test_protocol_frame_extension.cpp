@@ -1,0 +1,403 @@
+// The sensor frame's optional extension block (docs/protocol.md, "SensorFrame extension"):
+// the layout worked out by hand, round trips of every field at its extremes, the plain
+// 36-byte frame unchanged, and every malformed extension rejected with its error and reason.
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "legofeup/comms/protocol.hpp"
+
+namespace legofeup::comms {
+namespace {
+
+// --- Test-side byte helpers, independent of comms' byte order code --------------------------
+
+void put_le(Bytes& bytes, std::size_t offset, std::uint64_t value, std::size_t size) {
+    ASSERT_LE(offset + size, bytes.size());
+    for (std::size_t i = 0; i < size; ++i) {
+        bytes[offset + i] = static_cast<std::uint8_t>((value >> (8 * i)) & 0xFF);
+    }
+}
+void put_i16(Bytes& bytes, std::size_t offset, std::int16_t value) {
+    put_le(bytes, offset, static_cast<std::uint16_t>(value), 2);
+}
+void put_f64(Bytes& bytes, std::size_t offset, double value) {
+    put_le(bytes, offset, std::bit_cast<std::uint64_t>(value), 8);
+}
+
+/// Bit-for-bit equality of every field of two frames (−0.0 and NaN payloads included).
+void expect_same_frame(const SensorFrame& actual, const SensorFrame& expected) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(actual.time),
+              std::bit_cast<std::uint64_t>(expected.time));
+    EXPECT_EQ(actual.sequence, expected.sequence);
+    EXPECT_EQ(actual.encoder_counts, expected.encoder_counts);
+    EXPECT_EQ(actual.ir_adc, expected.ir_adc);
+    EXPECT_EQ(actual.ir_valid, expected.ir_valid);
+    EXPECT_EQ(actual.has_gyro, expected.has_gyro);
+    EXPECT_EQ(actual.gyro_raw, expected.gyro_raw);
+    EXPECT_EQ(actual.has_accelerometers, expected.has_accelerometers);
+    EXPECT_EQ(actual.accel_raw, expected.accel_raw);
+    EXPECT_EQ(actual.has_compass, expected.has_compass);
+    EXPECT_EQ(actual.compass_deg, expected.compass_deg);
+    EXPECT_EQ(actual.has_beacon_scan, expected.has_beacon_scan);
+    ASSERT_EQ(actual.beacons.count, expected.beacons.count);
+    for (std::size_t k = 0; k < kMaxBeaconSightings; ++k) {
+        EXPECT_EQ(actual.beacons.sightings[k].id, expected.beacons.sightings[k].id) << k;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(actual.beacons.sightings[k].bearing),
+                  std::bit_cast<std::uint64_t>(expected.beacons.sightings[k].bearing))
+            << "sighting " << k;
+    }
+}
+
+SensorFrame plain_frame() {
+    SensorFrame frame;
+    frame.time = 1.25;
+    frame.sequence = 0x01020304;
+    frame.encoder_counts = {360, -1};
+    frame.ir_adc = {512, 1023};
+    frame.ir_valid = {true, false};
+    return frame;
+}
+
+/// Every optional sensor, at the extremes of its type, with all eight sightings.
+SensorFrame full_frame() {
+    SensorFrame frame = plain_frame();
+    frame.has_gyro = true;
+    frame.gyro_raw = std::numeric_limits<std::int16_t>::min();
+    frame.has_accelerometers = true;
+    frame.accel_raw = {{{std::numeric_limits<std::int16_t>::max(), -1}, {0, -200}}};
+    frame.has_compass = true;
+    frame.compass_deg = 359;
+    frame.has_beacon_scan = true;
+    frame.beacons.count = kMaxBeaconSightings;
+    const std::array<double, kMaxBeaconSightings> bearings{
+        std::numbers::pi,
+        -std::numbers::pi,
+        -0.0,
+        0.0,
+        std::numeric_limits<double>::denorm_min(),
+        0.1,
+        -1.2345678901234567,
+        std::nextafter(std::numbers::pi, 0.0)};
+    for (std::size_t k = 0; k < kMaxBeaconSightings; ++k) {
+        frame.beacons.sightings[k] = {static_cast<std::uint8_t>(k == 0 ? 255 : k), bearings[k]};
+    }
+    return frame;
+}
+
+FramePacket decoded_or_fail(const Bytes& bytes) {
+    FramePacket packet;
+    std::string reason;
+    EXPECT_EQ(decode(bytes, packet, reason), DecodeError::None) << reason;
+    EXPECT_TRUE(reason.empty()) << reason;
+    return packet;
+}
+
+TEST(ProtocolFrameExtension, SizesFollowTheBeaconCount) {
+    EXPECT_EQ(frame_size(plain_frame()), 36U);
+    SensorFrame frame = plain_frame();
+    frame.has_compass = true;
+    EXPECT_EQ(frame_size(frame), 52U);
+    frame.has_beacon_scan = true;
+    frame.beacons.count = 3;
+    EXPECT_EQ(frame_size(frame), 52U + 27U);
+    frame.beacons.count = 200;  // more than a frame can hold: only the first eight travel
+    EXPECT_EQ(frame_size(frame), 124U);
+    EXPECT_LE(frame_size(frame), kMaxPacketSize);
+
+    for (std::size_t length = 0; length <= kMaxPacketSize; ++length) {
+        const bool expected =
+            length == 36 || (length >= 52 && length <= 124 && (length - 52) % 9 == 0);
+        EXPECT_EQ(is_valid_length(PacketType::SensorFrame, length), expected) << length;
+        EXPECT_EQ(is_valid_length(PacketType::WheelCommand, length), length == 36) << length;
+    }
+}
+
+TEST(ProtocolFrameExtension, AFrameWithoutExtrasIsThePlainThirtySixBytes) {
+    // Values in the fields of absent sensors do not travel: the bytes are those of the frame
+    // without them, 36 long, the extension never started.
+    FramePacket bare{plain_frame(), {true, false, true}};
+    FramePacket with_junk = bare;
+    with_junk.frame.gyro_raw = 77;
+    with_junk.frame.accel_raw = {{{1, 2}, {3, 4}}};
+    with_junk.frame.compass_deg = 90;
+    with_junk.frame.beacons.count = 2;
+    with_junk.frame.beacons.sightings[0] = {4, 1.0};
+    const Bytes bytes = encode(with_junk);
+    ASSERT_EQ(bytes.size(), 36U);
+    EXPECT_EQ(bytes, encode(bare));
+    EXPECT_EQ(bytes[6], 36);  // the length field
+
+    const FramePacket decoded = decoded_or_fail(bytes);
+    expect_same_frame(decoded.frame, bare.frame);
+    EXPECT_FALSE(decoded.frame.has_gyro || decoded.frame.has_accelerometers
+                 || decoded.frame.has_compass || decoded.frame.has_beacon_scan);
+}
+
+TEST(ProtocolFrameExtension, LayoutWorkedOutByHand) {
+    SensorFrame frame = plain_frame();
+    frame.has_gyro = true;
+    frame.gyro_raw = -5;
+    frame.has_accelerometers = true;
+    frame.accel_raw = {{{200, -3}, {-32768, 32767}}};
+    frame.has_compass = true;
+    frame.compass_deg = 359;
+    frame.has_beacon_scan = true;
+    frame.beacons.count = 2;
+    frame.beacons.sightings[0] = {3, -std::numbers::pi};
+    frame.beacons.sightings[1] = {200, 1.5};
+    const FramePacket packet{frame, {}};
+
+    // The plain frame with the new length, then the block of docs/protocol.md.
+    Bytes expected = encode(FramePacket{plain_frame(), {}});
+    ASSERT_EQ(expected.size(), 36U);
+    expected.resize(52 + 2 * 9, 0);
+    put_le(expected, 6, 70, 2);  // length
+    expected[36] = 0x0F;         // gyro | accelerometers | compass | beacon scan
+    expected[37] = 2;            // beacon count
+    const std::vector<std::uint8_t> fixed{
+        0xFB, 0xFF,  // gyro −5
+        0xC8, 0x00,  // accel right forward 200
+        0xFD, 0xFF,  // accel right left −3
+        0x00, 0x80,  // accel left forward −32768
+        0xFF, 0x7F,  // accel left left 32767
+        0x67, 0x01,  // compass 359
+        0x00, 0x00,  // reserved
+    };
+    std::copy(fixed.begin(), fixed.end(), expected.begin() + 38);
+    expected[52] = 3;
+    // −π = 0xC00921FB54442D18
+    const std::vector<std::uint8_t> minus_pi{0x18, 0x2D, 0x44, 0x54, 0xFB, 0x21, 0x09, 0xC0};
+    std::copy(minus_pi.begin(), minus_pi.end(), expected.begin() + 53);
+    expected[61] = 200;
+    put_f64(expected, 62, 1.5);
+    EXPECT_EQ(expected[62 + 7], 0x3F);  // 1.5 = 0x3FF8000000000000
+    EXPECT_EQ(expected[62 + 6], 0xF8);
+
+    EXPECT_EQ(encode(packet), expected);
+    expect_same_frame(decoded_or_fail(expected).frame, frame);
+}
+
+TEST(ProtocolFrameExtension, TheDocumentedExtendedExampleIsWhatTheEncoderWrites) {
+    // docs/protocol.md, "Example datagrams": the second sensor frame, copied from there.
+    const Bytes documented{0x4c, 0x46, 0x55, 0x50, 0x01, 0x01, 0x46, 0x00, 0xc4, 0x01, 0x00, 0x00,
+                           0x50, 0x8f, 0x56, 0x01, 0x00, 0x00, 0x00, 0x00, 0x29, 0x15, 0x00, 0x00,
+                           0x4f, 0x14, 0x00, 0x00, 0xb1, 0x00, 0x1f, 0x00, 0x03, 0x00, 0x00, 0x00,
+                           0x0d, 0x02, 0x55, 0x02, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+                           0x0f, 0x01, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xe8,
+                           0x3f, 0x04, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x04, 0xc0};
+    FramePacket packet;
+    packet.frame.time = 22.45;
+    packet.frame.sequence = 452;
+    packet.frame.encoder_counts = {5417, 5199};
+    packet.frame.ir_adc = {177, 31};
+    packet.frame.ir_valid = {true, true};
+    packet.frame.has_gyro = true;
+    packet.frame.gyro_raw = 597;
+    packet.frame.has_compass = true;
+    packet.frame.compass_deg = 271;
+    packet.frame.has_beacon_scan = true;
+    packet.frame.beacons.count = 2;
+    packet.frame.beacons.sightings[0] = {1, 0.75};
+    packet.frame.beacons.sightings[1] = {4, -2.5};
+    EXPECT_EQ(encode(packet), documented);
+    expect_same_frame(decoded_or_fail(documented).frame, packet.frame);
+}
+
+TEST(ProtocolFrameExtension, EveryFieldRoundTripsAtItsExtremes) {
+    const SensorFrame full = full_frame();
+    const Bytes bytes = encode(FramePacket{full, {false, true, false}});
+    ASSERT_EQ(bytes.size(), 124U);
+    const FramePacket decoded = decoded_or_fail(bytes);
+    expect_same_frame(decoded.frame, full);
+    EXPECT_TRUE(decoded.flags.paused);
+    EXPECT_FALSE(decoded.flags.watchdog_stopped);
+}
+
+TEST(ProtocolFrameExtension, EachSensorAloneRoundTripsAndLeavesTheOthersZero) {
+    const SensorFrame full = full_frame();
+    for (int which = 0; which < 4; ++which) {
+        SensorFrame frame = plain_frame();
+        frame.has_gyro = which == 0;
+        frame.has_accelerometers = which == 1;
+        frame.has_compass = which == 2;
+        frame.has_beacon_scan = which == 3;
+        frame.gyro_raw = full.gyro_raw;
+        frame.accel_raw = full.accel_raw;
+        frame.compass_deg = full.compass_deg;
+        frame.beacons = full.beacons;
+        const Bytes bytes = encode(FramePacket{frame, {}});
+        EXPECT_EQ(bytes[36], 1U << which) << which;
+        EXPECT_EQ(bytes.size(), which == 3 ? 124U : 52U) << which;
+
+        SensorFrame expected = plain_frame();  // absent sensors come back as zeros
+        expected.has_gyro = frame.has_gyro;
+        expected.has_accelerometers = frame.has_accelerometers;
+        expected.has_compass = frame.has_compass;
+        expected.has_beacon_scan = frame.has_beacon_scan;
+        if (which == 0) {
+            expected.gyro_raw = full.gyro_raw;
+        } else if (which == 1) {
+            expected.accel_raw = full.accel_raw;
+        } else if (which == 2) {
+            expected.compass_deg = full.compass_deg;
+        } else {
+            expected.beacons = full.beacons;
+        }
+        expect_same_frame(decoded_or_fail(bytes).frame, expected);
+    }
+}
+
+TEST(ProtocolFrameExtension, AnEmptyScanIsNotTheSameAsNoScan) {
+    SensorFrame frame = plain_frame();
+    frame.has_beacon_scan = true;  // scanned, saw nothing
+    const Bytes bytes = encode(FramePacket{frame, {}});
+    ASSERT_EQ(bytes.size(), 52U);
+    EXPECT_EQ(bytes[36], 0x08);
+    EXPECT_EQ(bytes[37], 0);
+    const FramePacket decoded = decoded_or_fail(bytes);
+    EXPECT_TRUE(decoded.frame.has_beacon_scan);
+    EXPECT_EQ(decoded.frame.beacons.count, 0);
+}
+
+TEST(ProtocolFrameExtension, TheDocumentedPlainExampleStillDecodes) {
+    // docs/protocol.md, "Example datagrams": a frame written before the extension existed.
+    const Bytes old{0x4c, 0x46, 0x55, 0x50, 0x01, 0x01, 0x24, 0x00, 0xc4, 0x01, 0x00, 0x00,
+                    0x50, 0x8f, 0x56, 0x01, 0x00, 0x00, 0x00, 0x00, 0x29, 0x15, 0x00, 0x00,
+                    0x4f, 0x14, 0x00, 0x00, 0xb1, 0x00, 0x1f, 0x00, 0x03, 0x00, 0x00, 0x00};
+    FramePacket packet;
+    packet.frame.has_gyro = true;  // stale state from an earlier frame must be cleared
+    packet.frame.has_beacon_scan = true;
+    packet.frame.beacons.count = 4;
+    std::string reason = "stale";
+    ASSERT_EQ(decode(old, packet, reason), DecodeError::None);
+    EXPECT_TRUE(reason.empty());
+    EXPECT_EQ(packet.frame.sequence, 452U);
+    EXPECT_EQ(packet.frame.encoder_counts, (std::array<std::int32_t, 2>{5417, 5199}));
+    EXPECT_EQ(packet.frame.ir_adc, (std::array<std::uint16_t, 2>{177, 31}));
+    EXPECT_FALSE(packet.frame.has_gyro);
+    EXPECT_FALSE(packet.frame.has_beacon_scan);
+    EXPECT_EQ(packet.frame.beacons.count, 0);
+    EXPECT_EQ(encode(packet), old);
+}
+
+// --- Malformed extensions ---------------------------------------------------------------------
+
+struct Rejection {
+    DecodeError error;
+    std::string reason;
+};
+
+Rejection rejected(const Bytes& bytes) {
+    FramePacket packet;
+    packet.frame.sequence = 99;  // a failed decode leaves the packet alone
+    std::string reason;
+    const DecodeError error = decode(bytes, packet, reason);
+    EXPECT_EQ(packet.frame.sequence, 99U);
+    FramePacket again;
+    EXPECT_EQ(decode(bytes, again), error);  // the short form agrees
+    return {error, reason};
+}
+
+Bytes full_bytes() {
+    return encode(FramePacket{full_frame(), {}});
+}
+
+TEST(ProtocolFrameExtension, ACountBeyondEightIsRejected) {
+    Bytes bytes = full_bytes();  // 124 bytes, the longest valid frame
+    bytes[37] = 9;
+    const Rejection r = rejected(bytes);
+    EXPECT_EQ(r.error, DecodeError::BadLength);
+    EXPECT_EQ(r.reason, "beacon count 9 exceeds 8");
+    bytes[37] = 255;
+    EXPECT_EQ(rejected(bytes).reason, "beacon count 255 exceeds 8");
+}
+
+TEST(ProtocolFrameExtension, ACountThatDisagreesWithTheLengthIsRejected) {
+    SensorFrame frame = full_frame();
+    frame.beacons.count = 1;
+    Bytes bytes = encode(FramePacket{frame, {}});
+    ASSERT_EQ(bytes.size(), 61U);
+    bytes[37] = 3;
+    Rejection r = rejected(bytes);
+    EXPECT_EQ(r.error, DecodeError::BadLength);
+    EXPECT_EQ(r.reason, "beacon count 3 needs length 79, the length field says 61");
+    bytes[37] = 0;
+    EXPECT_EQ(rejected(bytes).reason, "beacon count 0 needs length 52, the length field says 61");
+}
+
+TEST(ProtocolFrameExtension, SightingsWithoutTheScanFlagAreRejected) {
+    Bytes bytes = full_bytes();
+    bytes[36] = 0x07;  // beacon-scan bit cleared, count still 8
+    const Rejection r = rejected(bytes);
+    EXPECT_EQ(r.error, DecodeError::BadLength);
+    EXPECT_EQ(r.reason, "beacon count 8 without the beacon-scan flag (bit 3)");
+}
+
+TEST(ProtocolFrameExtension, ANonFiniteBearingIsRejectedWithItsSighting) {
+    for (const double bad :
+         {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+          -std::numeric_limits<double>::infinity()}) {
+        Bytes bytes = full_bytes();
+        put_f64(bytes, 52 + 9 * 5 + 1, bad);
+        const Rejection r = rejected(bytes);
+        EXPECT_EQ(r.error, DecodeError::NonFinite);
+        EXPECT_EQ(r.reason, "beacon sighting 5 (offset 98): bearing is not finite");
+    }
+}
+
+TEST(ProtocolFrameExtension, LengthsBetweenTheValidOnesAreRejected) {
+    for (const std::size_t length : {37U, 40U, 51U, 53U, 60U, 62U, 123U, 125U, 133U}) {
+        Bytes bytes = full_bytes();
+        bytes.resize(length, 0);
+        put_le(bytes, 6, length, 2);
+        const Rejection r = rejected(bytes);
+        EXPECT_EQ(r.error, DecodeError::BadLength) << length;
+        EXPECT_EQ(r.reason, "bad length: sensor frame length " + std::to_string(length)
+                                + " is neither 36 nor 52 + 9n (n = 0 … 8 beacon sightings)")
+            << length;
+    }
+}
+
+TEST(ProtocolFrameExtension, AnExtensionCutShortIsTruncated) {
+    const Bytes bytes = full_bytes();
+    for (const std::size_t size : {36U, 52U, 115U, 123U}) {
+        const Bytes cut(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size));
+        const Rejection r = rejected(cut);
+        EXPECT_EQ(r.error, DecodeError::Truncated) << size;
+        EXPECT_EQ(r.reason, "truncated") << size;
+    }
+}
+
+TEST(ProtocolFrameExtension, AnExtensionWithoutAnySensorIsRejected) {
+    // The frame it would describe is the plain 36-byte one: one encoding per frame.
+    SensorFrame frame = plain_frame();
+    frame.has_compass = true;
+    Bytes bytes = encode(FramePacket{frame, {}});
+    ASSERT_EQ(bytes.size(), 52U);
+    for (const int extras : {0x00, 0x10, 0xF0}) {
+        bytes[36] = static_cast<std::uint8_t>(extras);
+        const Rejection r = rejected(bytes);
+        EXPECT_EQ(r.error, DecodeError::BadLength) << extras;
+        EXPECT_EQ(r.reason,
+                  "extension block without any sensor flag (bits 0-3 of offset 36 all clear)");
+    }
+}
+
+TEST(ProtocolFrameExtension, ReservedExtrasBitsAreIgnored) {
+    Bytes bytes = full_bytes();
+    bytes[36] = 0xFF;
+    put_i16(bytes, 50, 0x1234);  // the reserved u16 too
+    expect_same_frame(decoded_or_fail(bytes).frame, full_frame());
+}
+
+}  // namespace
+}  // namespace legofeup::comms

@@ -1,0 +1,84 @@
+// Paper 002's "sudden change in robot position": SimulatorSettings::displacement.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "legofeup/core/angles.hpp"
+#include "legofeup/sim/simulator.hpp"
+
+namespace legofeup::sim {
+namespace {
+
+SimulatorSettings kidnapping(double time) {
+    SimulatorSettings settings;
+    settings.displacement = {true, time, 1.0, 0.5, -kPi / 2.0};
+    return settings;
+}
+
+WorldSpec open_floor() {
+    WorldSpec world;
+    world.start = {0.2, -0.3, 0.4};
+    return world;
+}
+
+TEST(Displacement, MovesTheRobotOnceInTheFirstPeriodEndingAtItsTime) {
+    Simulator simulator(open_floor(), RobotSpec{}, kidnapping(0.97), 1);
+    for (int i = 0; i < 19; ++i) {  // to 0.95 s: not yet
+        simulator.step_control_period();
+    }
+    EXPECT_NEAR(simulator.ground_truth().pose.x, 0.2, 1e-6);
+    simulator.step_control_period();  // the period ending at 1.0 s ≥ 0.97 s
+    Pose2 pose = simulator.ground_truth().pose;
+    EXPECT_NEAR(simulator.time(), 1.0, 1e-9);
+    EXPECT_NEAR(pose.x, 1.2, 1e-6);
+    EXPECT_NEAR(pose.y, 0.2, 1e-6);
+    EXPECT_NEAR(pose.theta, 0.4 - kPi / 2.0, 1e-6);
+    for (int i = 0; i < 40; ++i) {  // only once
+        simulator.step_control_period();
+    }
+    EXPECT_NEAR(simulator.ground_truth().pose.x, 1.2, 1e-6);
+    EXPECT_EQ(simulator.sensor_frame().encoder_counts[0], 0);  // the encoders did not see it
+
+    simulator.reset({0.0, 0.0, 0.0}, 2);  // a reset arms it again
+    for (int i = 0; i < 20; ++i) {
+        simulator.step_control_period();
+    }
+    pose = simulator.ground_truth().pose;
+    EXPECT_NEAR(pose.x, 1.0, 1e-6);
+    EXPECT_NEAR(pose.y, 0.5, 1e-6);
+}
+
+TEST(Displacement, TheEncodersOnlyCountTheWheelsWhileMoving) {
+    const auto run = [](const SimulatorSettings& settings) {
+        Simulator simulator(open_floor(), RobotSpec{}, settings, 1);
+        simulator.set_wheel_command({0.1, 0.1});
+        for (int i = 0; i < 60; ++i) {
+            simulator.step_control_period();
+        }
+        return std::pair(simulator.sensor_frame(), simulator.ground_truth());
+    };
+    const auto [plain_frame, plain_truth] = run({});
+    const auto [moved_frame, moved_truth] = run(kidnapping(1.0));
+    // The robot stops for an instant (teleport leaves it at rest), so the wheels lose a
+    // little while the motors pull it back to speed; the encoders count the rotation only.
+    EXPECT_NEAR(moved_frame.encoder_counts[0], plain_frame.encoder_counts[0], 3.0);
+    EXPECT_EQ(moved_frame.encoder_counts[0], moved_frame.encoder_counts[1]);
+    EXPECT_NEAR(moved_truth.pose.theta, plain_truth.pose.theta - kPi / 2.0, 1e-3);
+    // Driving 3 s along 0.4 rad, then along 0.4 − π/2 from the displaced point.
+    EXPECT_GT(std::abs(moved_truth.pose.x - plain_truth.pose.x), 0.5);
+}
+
+TEST(Displacement, IsValidated) {
+    SimulatorSettings settings = kidnapping(1.0);
+    settings.displacement.dtheta = std::nan("");
+    settings.displacement.time = -1.0;
+    std::string fields;
+    for (const ConfigIssue& issue : validate(settings)) {
+        fields += issue.field + " ";
+    }
+    EXPECT_EQ(fields, "simulator.displacement.time simulator.displacement.dtheta ");
+}
+
+}  // namespace
+}  // namespace legofeup::sim
