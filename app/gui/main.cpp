@@ -135,7 +135,9 @@ legofeup::lessons::RunConfig initial_config(const Options& options, QStringList&
         const lessons::Experiment* experiment =
             lessons::find_experiment(options.experiment.toStdString());
         if (experiment == nullptr) {
-            std::fprintf(stderr, "legofeup: --experiment = %s: expected one of a … f\n",
+            std::fprintf(stderr,
+                         "legofeup: --experiment = %s: expected a … f or <lesson>:<step> "
+                         "(e.g. beacons:a)\n",
                          qPrintable(options.experiment));
             std::exit(1);
         }
@@ -200,9 +202,16 @@ int main(int argc, char** argv) {
     session.setLinkChoice(link);
 
     ui::MainWindow window(session);
-    window.lessonPanel().showStep(!options.experiment.isEmpty() ? options.experiment
-                                  : options.config.isEmpty() ? ui::preferences::kExperiment.read()
-                                                             : QStringLiteral("f"));
+    // "<lesson>:<step>" names a step of another built-in lesson: show that lesson first, so
+    // the run is credited to its own step.
+    QString step = !options.experiment.isEmpty() ? options.experiment
+                   : options.config.isEmpty()    ? ui::preferences::kExperiment.read()
+                                                 : QStringLiteral("f");
+    if (const auto colon = step.indexOf(QLatin1Char(':')); colon > 0) {
+        window.lessonPanel().useBuiltInLesson(step.left(colon));
+        step = step.mid(colon + 1);
+    }
+    window.lessonPanel().showStep(step);
     if (options.large_text) {
         window.setLargeText(true);
     }
