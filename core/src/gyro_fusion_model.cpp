@@ -46,16 +46,34 @@ MotionCovariance GyroFusionProcessModel::state_jacobian(const MotionStateVector&
     return F;
 }
 
-EncoderVelocityMeasurement::EncoderVelocityMeasurement(const VelocityCommand& z, double r_v,
-                                                       double r_w)
-    : z_(z.v, z.w), r_(Vector(r_v, r_w).asDiagonal()), h_(Jacobian::Zero()) {
-    h_(0, kMotionV) = 1.0;
-    h_(1, kMotionW) = 1.0;
+namespace {
+
+// H of the encoders: picks v and ω.
+Eigen::Matrix<double, 2, kMotionStateSize> encoder_rows() {
+    Eigen::Matrix<double, 2, kMotionStateSize> h =
+        Eigen::Matrix<double, 2, kMotionStateSize>::Zero();
+    h(0, kMotionV) = 1.0;
+    h(1, kMotionW) = 1.0;
+    return h;
 }
 
-GyroRateMeasurement::GyroRateMeasurement(double rate, double r)
-    : z_(Vector(rate)), r_(Matrix(r)), h_(Jacobian::Zero()) {
-    h_(0, kMotionW) = 1.0;
+// H of the gyro: picks ω.
+Eigen::Matrix<double, 1, kMotionStateSize> gyro_row() {
+    Eigen::Matrix<double, 1, kMotionStateSize> h =
+        Eigen::Matrix<double, 1, kMotionStateSize>::Zero();
+    h(0, kMotionW) = 1.0;
+    return h;
 }
+
+}  // namespace
+
+EncoderVelocityMeasurement::EncoderVelocityMeasurement(const VelocityCommand& z, double r_v,
+                                                       double r_w)
+    : LinearMeasurement(Eigen::Vector2d(z.v, z.w), encoder_rows(),
+                        Eigen::Vector2d(r_v, r_w).asDiagonal()) {}
+
+GyroRateMeasurement::GyroRateMeasurement(double rate, double r)
+    : LinearMeasurement(Eigen::Matrix<double, 1, 1>(rate), gyro_row(),
+                        Eigen::Matrix<double, 1, 1>(r)) {}
 
 }  // namespace legofeup

@@ -120,15 +120,13 @@ void LegoFeupLoop::set_manual_command(const VelocityCommand& command) {
 }
 
 // Eq. 9 and 8: this period's wheel distances, d and Δθ; dead reckoning (eq. 7) alongside.
-// Sets snapshot_.increment; whether a prediction follows is snapshot_.predict_status's
-// business (NotAttempted when there was no previous frame or the encoders glitched).
-void LegoFeupLoop::predict_from_encoders(const SensorFrame& frame, double period) {
+// Returns whether the filters predict with this increment: not on the first frame (no
+// reference yet) nor when the encoders glitched.
+bool LegoFeupLoop::advance_odometry(const SensorFrame& frame) {
     LoopSnapshot& s = snapshot_;
     s.increment = {};
     s.odometry_glitch = false;
-    s.predict_status = StepStatus::NotAttempted;
-    speeds_.step(frame, period, s.speeds, s.readings);
-    bool predict = false;
+    bool moved = false;
     if (have_counts_) {
         const OdometryIncrement increment = odometry_increment(
             encoder_delta(frame.encoder_counts[0], last_counts_[0]),
@@ -139,36 +137,40 @@ void LegoFeupLoop::predict_from_encoders(const SensorFrame& frame, double period
         } else {
             s.increment = increment;
             odometry_pose_ = advance_pose(odometry_pose_, increment);  // eq. 7, no updates
-            predict = true;
+            moved = true;
         }
     }
     last_counts_ = frame.encoder_counts;
     have_counts_ = true;
+    return moved;
+}
 
+// The estimators of this period, timed: the pose filter (and its shadow) or the 5-state
+// fusion. `frame` is null when no frame came (prediction only).
+void LegoFeupLoop::estimate(const SensorFrame* frame, bool predict, double period) {
+    LoopSnapshot& s = snapshot_;
+    s.predict_status = StepStatus::NotAttempted;
     s.filter_seconds = 0.0;
     s.shadow_filter_seconds = 0.0;
     if (!uses_pose_filter()) {
+        // The fusion filter starts with the second frame (it needs a period).
         if (predict) {
-            s.filter_seconds = timed([&] { run_gyro_fusion(&frame, period); });
+            s.filter_seconds = timed([&] { run_gyro_fusion(frame, period); });
         }
-        return;  // the fusion filter starts with the second frame (it needs a period)
+        return;
     }
-    s.filter_seconds = timed([&] { run_pose_filter(filter_, &frame, predict, true); });
+    s.filter_seconds = timed([&] { run_pose_filter(filter_, frame, predict, true); });
     if (config_.lesson.compare_kinds) {
-        s.shadow_filter_seconds = timed([&] { run_pose_filter(shadow_, &frame, predict, false); });
+        s.shadow_filter_seconds = timed([&] { run_pose_filter(shadow_, frame, predict, false); });
     }
 }
 
-void LegoFeupLoop::predict_pose(PoseFilter& filter, const OdometryIncrement& increment) {
+StepStatus LegoFeupLoop::predict_pose(PoseFilter& filter, const OdometryIncrement& increment) {
     // Eq. 11–13: X̂ ← f(X̂, U, 0), P ← ∇f_X P ∇f_Xᵀ + ∇f_q Q ∇f_qᵀ; the compass lesson's Q
     // depends on the motion and heading (paper 004 eq. 5).
-    const StepStatus status =
-        config_.lesson.localisation == Localisation::Compass
-            ? filter.predict(CompassOdometryProcessModel(increment, config_.lesson.compass))
-            : filter.predict(OdometryProcessModel(increment, process_noise_));
-    if (&filter == &filter_) {
-        snapshot_.predict_status = status;
-    }
+    return config_.lesson.localisation == Localisation::Compass
+               ? filter.predict(CompassOdometryProcessModel(increment, config_.lesson.compass))
+               : filter.predict(OdometryProcessModel(increment, process_noise_));
 }
 
 void LegoFeupLoop::read_ir(const SensorFrame& frame) {
@@ -253,7 +255,10 @@ void LegoFeupLoop::update_with_compass(PoseFilter& filter, const LoopSnapshot& s
 void LegoFeupLoop::run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict,
                                    bool primary) {
     if (predict) {
-        predict_pose(filter, snapshot_.increment);
+        const StepStatus status = predict_pose(filter, snapshot_.increment);
+        if (primary) {
+            snapshot_.predict_status = status;
+        }
     }
     if (frame == nullptr) {
         return;
@@ -299,7 +304,9 @@ const LoopSnapshot& LegoFeupLoop::step(const SensorFrame& frame) {
     s.beacons = BeaconUpdates{};
 
     read_ir(frame);
-    predict_from_encoders(frame, period);
+    speeds_.step(frame, period, s.speeds, s.readings);
+    const bool moved = advance_odometry(frame);
+    estimate(&frame, moved, period);
     control_and_publish();
     last_time_ = frame.time;
     return s;
@@ -319,19 +326,7 @@ const LoopSnapshot& LegoFeupLoop::step_without_frame(double time) {
     // in which the robot moved in some unknown way; its odometry arrives with the next frame.
     s.increment = {};
     s.odometry_glitch = false;
-    s.predict_status = StepStatus::NotAttempted;
-    s.filter_seconds = 0.0;
-    s.shadow_filter_seconds = 0.0;
-    if (have_counts_) {
-        if (uses_pose_filter()) {
-            run_pose_filter(filter_, nullptr, true, true);
-            if (config_.lesson.compare_kinds) {
-                run_pose_filter(shadow_, nullptr, true, false);
-            }
-        } else {
-            run_gyro_fusion(nullptr, period);
-        }
-    }
+    estimate(nullptr, have_counts_, period);
     for (IrSample& sample : s.ir) {
         sample = IrSample{0, IrDistance{0.0, IrStatus::Unavailable}};
     }

@@ -22,11 +22,7 @@ SpeedEstimators::SpeedEstimators()
       body_(VelocityKfTuning{}) {}
 
 void SpeedEstimators::configure(const LessonFilters& filters, const OdometryParams& odometry) {
-    const bool wheels_changed = filters.wheel_speed.q_angle != filters_.wheel_speed.q_angle
-                                || filters.wheel_speed.q_rate != filters_.wheel_speed.q_rate
-                                || filters.wheel_speed.r_right != filters_.wheel_speed.r_right
-                                || filters.wheel_speed.r_left != filters_.wheel_speed.r_left
-                                || filters.wheel_speed.p0 != filters_.wheel_speed.p0;
+    const bool wheels_changed = filters.wheel_speed != filters_.wheel_speed;
     filters_ = filters;
     odometry_ = odometry;
     body_.set_tuning(filters.velocity);

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <initializer_list>
 #include <type_traits>
 
 #include "legofeup/core/angles.hpp"
@@ -77,23 +78,22 @@ Setting pose_part(std::string key, std::string field, std::string help,
     return s;
 }
 
-// A Choice bound to an enum member whose values are 0 … count−1 and named by to_string.
-template <class Enum, class Access>
-Setting choice(std::string key, std::string field, std::string help, int count, Access access) {
+// A Choice bound to an enum member: `values` named by to_string, read back with `parse`
+// (the reader has already checked the text is one of the choices).
+template <class Enum, class Access, class Parse>
+Setting choice(std::string key, std::string field, std::string help,
+               std::initializer_list<Enum> values, Parse parse, Access access) {
     Setting s{
         std::move(key), std::move(field), std::move(help), SettingType::Choice, {}, {}, {}, {}};
-    for (int i = 0; i < count; ++i) {
-        s.choices.emplace_back(to_string(static_cast<Enum>(i)));
+    for (const Enum value : values) {
+        s.choices.emplace_back(to_string(value));
     }
     s.get = [access](const RunConfig& c) -> SettingValue {
         return std::string(to_string(access(c)));
     };
-    s.set = [access, count](RunConfig& c, const SettingValue& v) {
-        const std::string& name = std::get<std::string>(v);
-        for (int i = 0; i < count; ++i) {
-            if (name == to_string(static_cast<Enum>(i))) {
-                access(c) = static_cast<Enum>(i);
-            }
+    s.set = [access, parse](RunConfig& c, const SettingValue& v) {
+        if (const auto value = parse(std::get<std::string>(v))) {
+            access(c) = *value;
         }
     };
     return s;
@@ -101,8 +101,9 @@ Setting choice(std::string key, std::string field, std::string help, int count, 
 
 // The further lessons' settings: [localisation], filter kind, and each filter's tuning.
 void add_lesson_filter_settings(std::vector<Setting>& s) {
-    s.push_back(choice<FilterKind>(
-        "filter.kind", "filter.kind", "the pose filter: ekf or ukf (may change while running)", 2,
+    s.push_back(choice(
+        "filter.kind", "filter.kind", "the pose filter: ekf or ukf (may change while running)",
+        {FilterKind::Ekf, FilterKind::Ukf}, filter_kind_from_string,
         [](auto& c) -> auto& { return c.lesson.kind; }));
     s.push_back(boolean(
         "filter.compare_kinds", "filter.compare_kinds",
@@ -112,11 +113,13 @@ void add_lesson_filter_settings(std::vector<Setting>& s) {
         "filter.ukf_kappa", "filter.ukf_kappa",
         "UKF spread κ: sigma points at ±√((n+κ)P), weights κ/(n+κ) and 1/(2(n+κ))",
         [](auto& c) -> auto& { return c.lesson.ukf.kappa; }));
-    s.push_back(choice<Localisation>(
+    s.push_back(choice(
         "localisation.method", "localisation.method",
         "what corrects the odometry: walls (IR), beacons (bearings), gyro_fusion (5-state EKF "
         "with encoders, accelerometers, gyro) or compass",
-        4, [](auto& c) -> auto& { return c.lesson.localisation; }));
+        {Localisation::Walls, Localisation::Beacons, Localisation::GyroFusion,
+         Localisation::Compass},
+        localisation_from_string, [](auto& c) -> auto& { return c.lesson.localisation; }));
 
     s.push_back(real(
         "beacons.r_bearing", "beacons.r_bearing", "variance of one beacon bearing, rad²",

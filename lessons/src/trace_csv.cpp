@@ -11,13 +11,19 @@ namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();  // written as an empty cell
 
-// Fixed, locale-independent formatting: the same run gives the same bytes.
-void number(std::ostream& out, double value) {
+// Fixed, locale-independent formatting: the same run gives the same bytes. A non-finite
+// value is an empty cell.
+void cell(std::ostream& out, double value) {
     if (std::isfinite(value)) {
         char text[32];
         std::snprintf(text, sizeof text, "%.9g", value);
         out << text;
     }
+}
+
+/// A cell and the comma after it.
+void number(std::ostream& out, double value) {
+    cell(out, value);
     out << ',';
 }
 
@@ -72,11 +78,7 @@ void further_lesson_cells(std::ostream& out, const LoopSnapshot& s, const Ground
     // The last cell: no comma after it. (The gyro bias and magnetic disturbance of the truth
     // are not written: the UDP truth stream does not carry them, and a trace must not depend
     // on the link it came over.)
-    if (std::isfinite(truth.wheel_surface_speeds.left)) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.9g", truth.wheel_surface_speeds.left);
-        out << text;
-    }
+    cell(out, truth.wheel_surface_speeds.left);
     out << '\n';
 }
 

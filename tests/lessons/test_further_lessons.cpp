@@ -7,6 +7,7 @@
 #include "legofeup/lessons/lesson.hpp"
 #include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/run_summary.hpp"
+#include "lesson_checks_test_support.hpp"
 
 namespace legofeup::lessons {
 namespace {
@@ -17,19 +18,6 @@ const LessonStep& step(const char* lesson, const char* id) {
     const LessonStep* s = found->find_step(id);
     EXPECT_NE(s, nullptr) << lesson << ":" << id;
     return *s;
-}
-
-nlohmann::json metrics_of(RunConfig config, std::uint64_t seed) {
-    config.seed = seed;
-    return result_metrics_to_json(run_lockstep(resolve(config)));
-}
-
-std::string failures(const std::vector<CheckResult>& results) {
-    std::string text;
-    for (const CheckResult& result : results) {
-        text += result.passed ? "" : result.message + "\n";
-    }
-    return text;
 }
 
 TEST(FurtherLessons, AreRegisteredInOrderAndReachableAsExperiments) {

@@ -8,6 +8,7 @@
 #include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/lessons/submission.hpp"
+#include "lesson_checks_test_support.hpp"
 
 namespace legofeup::lessons {
 namespace {
@@ -16,19 +17,6 @@ const LessonStep& step(const char* id) {
     const LessonStep* found = legofeup_lesson().find_step(id);
     EXPECT_NE(found, nullptr) << id;
     return *found;
-}
-
-nlohmann::json metrics_of(RunConfig config, std::uint64_t seed) {
-    config.seed = seed;
-    return result_metrics_to_json(run_lockstep(resolve(config)));
-}
-
-std::string failures(const std::vector<CheckResult>& results) {
-    std::string text;
-    for (const CheckResult& result : results) {
-        text += result.passed ? "" : result.message + "\n";
-    }
-    return text;
 }
 
 bool all_pass(const std::vector<CheckResult>& results) {

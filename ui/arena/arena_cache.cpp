@@ -6,15 +6,14 @@
 #include <utility>
 #include <variant>
 
+#include "arena_drawing.hpp"
 #include "legofeup/core/angles.hpp"
 
 namespace legofeup::ui {
 
 namespace {
 
-QPointF to_point(const Vector2& v) {
-    return {v.x(), v.y()};
-}
+using arena_drawing::to_point;
 
 }  // namespace
 

@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arena_drawing.hpp"
+
 namespace legofeup::ui {
 
 namespace {
+
+using arena_drawing::with_alpha;
 
 double linear_channel(int value) {
     const double c = value / 255.0;
@@ -16,11 +20,6 @@ double relative_luminance(const QColor& color) {
     const QColor rgb = color.toRgb();
     return 0.2126 * linear_channel(rgb.red()) + 0.7152 * linear_channel(rgb.green())
            + 0.0722 * linear_channel(rgb.blue());
-}
-
-QColor with_alpha(QColor color, int alpha) {
-    color.setAlpha(alpha);
-    return color;
 }
 
 }  // namespace

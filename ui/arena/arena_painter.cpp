@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arena_drawing.hpp"
 #include "legofeup/core/angles.hpp"
 #include "legofeup/core/ir_geometry.hpp"
 
@@ -12,14 +13,8 @@ namespace legofeup::ui {
 
 namespace {
 
-QColor with_alpha(QColor color, int alpha) {
-    color.setAlpha(alpha);
-    return color;
-}
-
-QPointF to_point(const Vector2& v) {
-    return {v.x(), v.y()};
-}
+using arena_drawing::to_point;
+using arena_drawing::with_alpha;
 
 QString length_text(double metres) {
     if (metres >= 0.1) {

@@ -4,20 +4,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arena_drawing.hpp"
 #include "legofeup/ui/arena/arena_painter.hpp"
 
 namespace legofeup::ui {
 
 namespace {
 
-QColor with_alpha(QColor color, int alpha) {
-    color.setAlpha(alpha);
-    return color;
-}
-
-QPointF to_point(const Vector2& v) {
-    return {v.x(), v.y()};
-}
+using arena_drawing::to_point;
+using arena_drawing::with_alpha;
 
 bool finite_pose(const Pose2& pose) {
     return std::isfinite(pose.x) && std::isfinite(pose.y) && std::isfinite(pose.theta);

@@ -7,11 +7,14 @@
 //   x_k = x_{k−1} + T·[a; α] + w,      w ~ N(0, Q = diag(q_v, q_w))
 // and the encoders' differentiated speeds (eq. 14) measure it directly (eq. 22):
 //   z_k = [v; ω] + e,                  e ~ N(0, R = diag(r_v, r_w)),  H = I
-// Update: S = P + R (LDLT), K = P·S⁻¹, x ← x + K·(z − x), Joseph form for P.
+// Run by the ExtendedKalmanFilter with linear models (linear_models.hpp): S = P + R (LDLT),
+// K = P·S⁻¹, x ← x + K·(z − x), Joseph form for P.
 
 #include <Eigen/Core>
 
+#include "legofeup/core/extended_kalman_filter.hpp"
 #include "legofeup/core/lesson_filters_config.hpp"
+#include "legofeup/core/linear_models.hpp"
 #include "legofeup/core/motion.hpp"
 
 namespace legofeup {
@@ -31,13 +34,12 @@ class BodyVelocityFilter {
     /// Eq. 22 with (v, ω) from the encoders. Non-finite input leaves the filter unchanged.
     void update(const VelocityCommand& from_encoders);
 
-    VelocityCommand estimate() const { return {x_(0), x_(1)}; }
-    Eigen::Matrix2d covariance() const { return P_; }
+    VelocityCommand estimate() const { return {filter_.state()(0), filter_.state()(1)}; }
+    Eigen::Matrix2d covariance() const { return filter_.covariance(); }
 
   private:
     VelocityKfTuning tuning_;
-    Eigen::Vector2d x_ = Eigen::Vector2d::Zero();
-    Eigen::Matrix2d P_;
+    ExtendedKalmanFilter<EuclideanStateSpace<2>> filter_;
 };
 
 }  // namespace legofeup

@@ -68,6 +68,33 @@ struct UpdateReport {
     double nis = std::numeric_limits<double>::quiet_NaN();                   ///< νᵀS⁻¹ν
 };
 
+/// The part of an update the EKF and the UKF share once they have ν and S (in `report`) and
+/// the cross-covariance C between state and measurement (P·∇h_Xᵀ for the EKF, P_xz for the
+/// UKF): factorise S with LDLT, compute the NIS, apply the gate and the gain W = C·S⁻¹.
+/// Returns false, with report.status saying why, when the update must not go on.
+template <int M, int N>
+bool solve_gain(UpdateReport<M, N>& report, const Eigen::Matrix<double, N, M>& cross,
+                const MahalanobisGate& gate) {
+    using MeasurementMatrix = Eigen::Matrix<double, M, M>;
+    const Eigen::LDLT<MeasurementMatrix> ldlt(report.innovation_covariance);
+    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0.0).all()) {
+        report.status = StepStatus::RejectedSingular;
+        return false;
+    }
+    report.nis = report.innovation.dot(ldlt.solve(report.innovation));
+    if (gate.enabled && !(report.nis <= gate.threshold)) {
+        report.status = StepStatus::RejectedByGate;
+        return false;
+    }
+    // W = C·S⁻¹: each row of W is (S⁻¹·row of C)ᵀ since S is symmetric. Solved one row at a
+    // time: Eigen sends a matrix right-hand side through its blocked GEMM path, which for
+    // these sizes costs more than the rest of the update.
+    for (int row = 0; row < N; ++row) {
+        report.gain.row(row) = ldlt.solve(cross.row(row).transpose()).transpose();
+    }
+    return true;
+}
+
 template <class StateSpace>
 class ExtendedKalmanFilter : public FilterBase<StateSpace> {
     using Base = FilterBase<StateSpace>;
@@ -110,23 +137,9 @@ class ExtendedKalmanFilter : public FilterBase<StateSpace> {
             return report;
         }
 
-        const Eigen::LDLT<MeasurementMatrix> ldlt(S);
-        if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0.0).all()) {
-            report.status = StepStatus::RejectedSingular;
+        // W = P·∇h_Xᵀ·S⁻¹ (eq. 16).
+        if (!solve_gain<M, kSize>(report, (H * P).transpose(), gate)) {
             return report;
-        }
-        report.nis = report.innovation.dot(ldlt.solve(report.innovation));
-        if (gate.enabled && !(report.nis <= gate.threshold)) {
-            report.status = StepStatus::RejectedByGate;
-            return report;
-        }
-
-        // W = P·∇h_Xᵀ·S⁻¹ = (S⁻¹·∇h_X·P)ᵀ since P and S are symmetric (eq. 16). Solved one
-        // column at a time: Eigen sends a matrix right-hand side through its blocked GEMM
-        // path, which for these sizes costs more than the rest of the update.
-        const Eigen::Matrix<double, M, kSize> HP = H * P;
-        for (int column = 0; column < kSize; ++column) {
-            report.gain.row(column) = ldlt.solve(HP.col(column)).transpose();
         }
         const Vector x_new = x + report.gain * report.innovation;  // eq. 14
         const Covariance I_WH = Covariance::Identity() - report.gain * H;

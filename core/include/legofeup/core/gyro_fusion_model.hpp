@@ -25,6 +25,7 @@
 #include <Eigen/Core>
 
 #include "legofeup/core/lesson_filters_config.hpp"
+#include "legofeup/core/linear_models.hpp"
 #include "legofeup/core/motion.hpp"
 #include "legofeup/core/motion_state_space.hpp"
 
@@ -60,51 +61,17 @@ class GyroFusionProcessModel {
 };
 
 /// (v, ω) from the differentiated encoders: h(X) = [v, ω].
-class EncoderVelocityMeasurement {
+class EncoderVelocityMeasurement : public LinearMeasurement<2, kMotionStateSize> {
   public:
-    static constexpr int kSize = 2;
-    using Vector = Eigen::Vector2d;
-    using Matrix = Eigen::Matrix2d;
-    using Jacobian = Eigen::Matrix<double, kSize, kMotionStateSize>;
-
     /// r_v in (m/s)², r_w in (rad/s)².
     EncoderVelocityMeasurement(const VelocityCommand& z, double r_v, double r_w);
-
-    const Vector& measurement() const { return z_; }
-    Vector predict_measurement(const MotionStateVector& x) const {
-        return {x(kMotionV), x(kMotionW)};
-    }
-    const Jacobian& jacobian(const MotionStateVector& /*x*/) const { return h_; }
-    const Matrix& noise_covariance() const { return r_; }
-    Vector residual(const Vector& a, const Vector& b) const { return a - b; }
-
-  private:
-    Vector z_;
-    Matrix r_;
-    Jacobian h_;
 };
 
 /// The gyroscope's turn rate (rad/s, CCW): h(X) = ω.
-class GyroRateMeasurement {
+class GyroRateMeasurement : public LinearMeasurement<1, kMotionStateSize> {
   public:
-    static constexpr int kSize = 1;
-    using Vector = Eigen::Matrix<double, 1, 1>;
-    using Matrix = Eigen::Matrix<double, 1, 1>;
-    using Jacobian = Eigen::Matrix<double, 1, kMotionStateSize>;
-
     /// r in (rad/s)².
     GyroRateMeasurement(double rate, double r);
-
-    const Vector& measurement() const { return z_; }
-    Vector predict_measurement(const MotionStateVector& x) const { return Vector(x(kMotionW)); }
-    const Jacobian& jacobian(const MotionStateVector& /*x*/) const { return h_; }
-    const Matrix& noise_covariance() const { return r_; }
-    Vector residual(const Vector& a, const Vector& b) const { return a - b; }
-
-  private:
-    Vector z_;
-    Matrix r_;
-    Jacobian h_;
 };
 
 }  // namespace legofeup

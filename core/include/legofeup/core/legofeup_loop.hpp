@@ -63,8 +63,9 @@ class LegoFeupLoop {
 
   private:
     void apply_tuning();
-    void predict_from_encoders(const SensorFrame& frame, double period);
-    void predict_pose(PoseFilter& filter, const OdometryIncrement& increment);
+    bool advance_odometry(const SensorFrame& frame);
+    void estimate(const SensorFrame* frame, bool predict, double period);
+    StepStatus predict_pose(PoseFilter& filter, const OdometryIncrement& increment);
     void read_ir(const SensorFrame& frame);
     void update_with_walls(PoseFilter& filter, bool primary);
     void update_with_beacons(PoseFilter& filter, const SensorFrame& frame, bool primary);

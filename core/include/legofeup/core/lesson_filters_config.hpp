@@ -52,6 +52,8 @@ struct WheelSpeedKfTuning {
     double r_right = 2.5;  ///< R of the right encoder, °²
     double r_left = 1.5;   ///< R of the left encoder, °²
     double p0 = 10.0;      ///< P0 = p0·I
+
+    friend bool operator==(const WheelSpeedKfTuning&, const WheelSpeedKfTuning&) = default;
 };
 
 /// The defaults are our robot's: the accelerometers' noise (≈2 counts, 0.1 m/s²) over one

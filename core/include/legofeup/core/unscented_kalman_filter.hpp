@@ -185,20 +185,9 @@ class UnscentedKalmanFilter : public FilterBase<StateSpace> {
             return report;
         }
 
-        const Eigen::LDLT<MeasurementMatrix> ldlt(S);
-        if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0.0).all()) {
-            report.status = StepStatus::RejectedSingular;
+        // W = P_xz·S⁻¹.
+        if (!solve_gain<M, kSize>(report, Pxz, gate)) {
             return report;
-        }
-        report.nis = report.innovation.dot(ldlt.solve(report.innovation));
-        if (gate.enabled && !(report.nis <= gate.threshold)) {
-            report.status = StepStatus::RejectedByGate;
-            return report;
-        }
-
-        // W = P_xz·S⁻¹, i.e. each row of W is (S⁻¹·row of P_xzᵀ)ᵀ since S is symmetric.
-        for (int row = 0; row < kSize; ++row) {
-            report.gain.row(row) = ldlt.solve(Pxz.row(row).transpose()).transpose();
         }
         const Vector x_new = x + report.gain * report.innovation;
         const Covariance P_new = P - report.gain * S * report.gain.transpose();

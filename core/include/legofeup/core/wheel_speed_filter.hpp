@@ -8,12 +8,15 @@
 // with w ~ N(0, Q = diag(q_angle, q_rate)) and v ~ N(0, r) (eq. 19 gives Q = diag(0.1, 10),
 // R = 2.5 / 1.5 for the right / left wheel and P₀ = 10·I).
 //
-// A linear KF: predict x ← Φ·x, P ← Φ·P·Φᵀ + Q; update with the scalar innovation
-// ν = z − θ, S = P₁₁ + r, K = P·Hᵀ/S, x ← x + K·ν and the Joseph form
-// P ← (I − K·H)·P·(I − K·H)ᵀ + K·r·Kᵀ. The encoder is read in degrees, so the filter
-// stays in the paper's units and its numbers compare directly with eq. 19.
+// A linear KF, run by the ExtendedKalmanFilter with linear models (linear_models.hpp):
+// predict x ← Φ·x, P ← Φ·P·Φᵀ + Q; update with ν = z − θ, S = P₁₁ + r, K = P·Hᵀ/S,
+// x ← x + K·ν and the Joseph form. The encoder is read in degrees, so the filter stays in
+// the paper's units and its numbers compare directly with eq. 19.
 
 #include <Eigen/Core>
+
+#include "legofeup/core/extended_kalman_filter.hpp"
+#include "legofeup/core/linear_models.hpp"
 
 namespace legofeup {
 
@@ -30,9 +33,9 @@ class WheelSpeedFilter {
     /// was; so does an update whose result would not be finite.
     void step(double measured_angle_deg, double period_s);
 
-    double angle_deg() const { return x_(0); }
-    double rate_dps() const { return x_(1); }
-    Eigen::Matrix2d covariance() const { return P_; }
+    double angle_deg() const { return filter_.state()(0); }
+    double rate_dps() const { return filter_.state()(1); }
+    Eigen::Matrix2d covariance() const { return filter_.covariance(); }
     /// K of the last update (zero before the first).
     Eigen::Vector2d last_gain() const { return gain_; }
 
@@ -41,8 +44,7 @@ class WheelSpeedFilter {
     double q_rate_;
     double r_;
     double p0_;
-    Eigen::Vector2d x_ = Eigen::Vector2d::Zero();
-    Eigen::Matrix2d P_;
+    ExtendedKalmanFilter<EuclideanStateSpace<2>> filter_;
     Eigen::Vector2d gain_ = Eigen::Vector2d::Zero();
 };
 

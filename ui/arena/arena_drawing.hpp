@@ -1,0 +1,19 @@
+#pragma once
+// Small conversions the arena's painters share (private to ui/arena).
+#include <QColor>
+#include <QPointF>
+
+#include "legofeup/core/state.hpp"
+
+namespace legofeup::ui::arena_drawing {
+
+inline QColor with_alpha(QColor color, int alpha) {
+    color.setAlpha(alpha);
+    return color;
+}
+
+inline QPointF to_point(const Vector2& v) {
+    return {v.x(), v.y()};
+}
+
+}  // namespace legofeup::ui::arena_drawing
