@@ -13,7 +13,7 @@ for fuzzer in build/fuzz/fuzz/fuzz_*; do
     name="$(basename "$fuzzer")"
     echo "== $name: ${seconds} s"
     # -max_len above the largest packet, so oversized inputs are tried too.
-    "$fuzzer" -max_total_time="$seconds" -max_len=600 -print_final_stats=1 \
+    "$fuzzer" -max_total_time="$seconds" -max_len=2400 -print_final_stats=1 \
         -artifact_prefix="build/fuzz/artifacts/$name-" 2>&1 | grep -E "stat::number_of_executed_units|ERROR|SUMMARY" || true
     if ls build/fuzz/artifacts/"$name"-* >/dev/null 2>&1; then
         echo "$name found a failing input: build/fuzz/artifacts/$name-*" >&2

@@ -6,8 +6,10 @@ set -euo pipefail
 packages=(
     build-essential cmake ninja-build pkg-config clang-format
     libeigen3-dev                       # core: linear algebra
+    libnanoflann-dev                    # core: kd-tree for ICP
     libbox2d-dev                        # sim: physics
     libtomlplusplus-dev nlohmann-json3-dev  # lessons: configuration files, summaries
+    libyaml-cpp-dev                     # lessons: ROS map_server YAML map files
     libcli11-dev libcairo2-dev fonts-dejavu-core  # legofeup-cli: options, PNG/SVG plots
     libpango1.0-dev                     # report/: the student report's PDF (wrapped text)
     qt6-base-dev qt6-svg-dev libqcustomplot-dev  # ui/: the desktop application

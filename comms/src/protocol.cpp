@@ -34,17 +34,28 @@ constexpr std::uint8_t kGyroBit = 1U << 0;
 constexpr std::uint8_t kAccelerometersBit = 1U << 1;
 constexpr std::uint8_t kCompassBit = 1U << 2;
 constexpr std::uint8_t kBeaconScanBit = 1U << 3;
+constexpr std::uint8_t kLaserScanBit = 1U << 4;
+constexpr std::uint8_t kSensorBits =
+    kGyroBit | kAccelerometersBit | kCompassBit | kBeaconScanBit | kLaserScanBit;
 // Its fields: 37 u8 beacon count, 38 i16 gyro, 40 4×i16 accelerometers ([unit][axis] in the
-// order of SensorFrame::accel_raw), 48 i16 compass, 50 u16 reserved, 52 the sightings.
+// order of SensorFrame::accel_raw), 48 i16 compass, 50 u16 laser beam count, 52 the
+// sightings, then the laser ranges.
 constexpr std::size_t kBeaconCountOffset = 37;
 constexpr std::size_t kGyroOffset = 38;
 constexpr std::size_t kAccelOffset = 40;
 constexpr std::size_t kCompassOffset = 48;
+constexpr std::size_t kBeamCountOffset = 50;
 constexpr auto kMaxSightings = static_cast<std::size_t>(kMaxBeaconSightings);
-static_assert(kFrameSightingsOffset + kMaxSightings * kFrameSightingSize <= kMaxPacketSize);
+constexpr auto kMaxBeams = static_cast<std::size_t>(kMaxScanBeams);
 
-std::size_t extended_frame_size(std::size_t sightings) {
-    return kFrameSightingsOffset + kFrameSightingSize * sightings;
+/// 52 + 9n + 2m: n sightings, then m laser ranges.
+constexpr std::size_t extended_frame_size(std::size_t sightings, std::size_t beams) {
+    return kFrameSightingsOffset + kFrameSightingSize * sightings + kFrameRangeSize * beams;
+}
+static_assert(extended_frame_size(kMaxSightings, kMaxBeams) == kMaxPacketSize);
+
+std::size_t ranges_offset(std::size_t sightings) {
+    return extended_frame_size(sightings, 0);
 }
 
 // Control request flag bits.
@@ -165,13 +176,24 @@ std::size_t packet_size(PacketType type) {
     return 0;
 }
 
+namespace {
+
+std::size_t sightings_carried(const SensorFrame& frame) {
+    return frame.has_beacon_scan ? std::min<std::size_t>(frame.beacons.count, kMaxSightings) : 0;
+}
+
+std::size_t beams_carried(const SensorFrame& frame) {
+    return frame.has_laser_scan ? std::min<std::size_t>(frame.laser.beam_count, kMaxBeams) : 0;
+}
+
+}  // namespace
+
 std::size_t frame_size(const SensorFrame& frame) {
-    if (!frame.has_gyro && !frame.has_accelerometers && !frame.has_compass
-        && !frame.has_beacon_scan) {
+    if (!frame.has_gyro && !frame.has_accelerometers && !frame.has_compass && !frame.has_beacon_scan
+        && !frame.has_laser_scan) {
         return kFrameSize;
     }
-    return extended_frame_size(
-        frame.has_beacon_scan ? std::min<std::size_t>(frame.beacons.count, kMaxSightings) : 0);
+    return extended_frame_size(sightings_carried(frame), beams_carried(frame));
 }
 
 bool is_valid_length(PacketType type, std::size_t length) {
@@ -182,9 +204,19 @@ bool is_valid_length(PacketType type, std::size_t length) {
     if (length == size) {
         return true;
     }
-    return type == PacketType::SensorFrame && length >= kFrameSightingsOffset
-           && length <= extended_frame_size(kMaxSightings)
-           && (length - kFrameSightingsOffset) % kFrameSightingSize == 0;
+    if (type != PacketType::SensorFrame || length < kFrameSightingsOffset
+        || length > kMaxPacketSize) {
+        return false;
+    }
+    // 52 + 9n + 2m for some n ≤ 8 and m ≤ 1024.
+    for (std::size_t sightings = 0; sightings <= kMaxSightings; ++sightings) {
+        const std::size_t used = extended_frame_size(sightings, 0);
+        if (used <= length && (length - used) % kFrameRangeSize == 0
+            && (length - used) / kFrameRangeSize <= kMaxBeams) {
+            return true;
+        }
+    }
+    return false;
 }
 
 std::string_view to_string(PacketType type) {
@@ -357,7 +389,8 @@ DecodeError decode_header(std::span<const std::uint8_t> datagram, PacketHeader& 
 //     30 u16 IR rear A/D, 32 u16 flags, 34 u16 reserved; then, only when the frame has any
 //     optional sensor, the extension block: 36 u8 extras flags, 37 u8 beacon count n,
 //     38 i16 gyro, 40 i16 accel right forward, 42 right left, 44 left forward, 46 left left,
-//     48 i16 compass degrees, 50 u16 reserved, 52 + 9k u8 sighting k id, 53 + 9k f64 bearing.
+//     48 i16 compass degrees, 50 u16 laser beam count m, 52 + 9k u8 sighting k id,
+//     53 + 9k f64 bearing, then 52 + 9n + 2i u16 range of laser beam i (mm or error code).
 //     Fields of absent sensors are sent as 0 and decoded as 0.
 
 Bytes encode(const FramePacket& packet) {
@@ -382,7 +415,8 @@ Bytes encode(const FramePacket& packet) {
            static_cast<std::uint8_t>(extra(frame.has_gyro, kGyroBit)
                                      | extra(frame.has_accelerometers, kAccelerometersBit)
                                      | extra(frame.has_compass, kCompassBit)
-                                     | extra(frame.has_beacon_scan, kBeaconScanBit)));
+                                     | extra(frame.has_beacon_scan, kBeaconScanBit)
+                                     | extra(frame.has_laser_scan, kLaserScanBit)));
     if (frame.has_gyro) {
         out.i16(kGyroOffset, frame.gyro_raw);
     }
@@ -396,28 +430,36 @@ Bytes encode(const FramePacket& packet) {
     if (frame.has_compass) {
         out.i16(kCompassOffset, frame.compass_deg);
     }
-    const std::size_t sightings = (size - kFrameSightingsOffset) / kFrameSightingSize;
+    const std::size_t sightings = sightings_carried(frame);
     out.u8(kBeaconCountOffset, static_cast<std::uint8_t>(sightings));
     for (std::size_t k = 0; k < sightings; ++k) {
         const BeaconSighting& sighting = frame.beacons.sightings[k];
         out.u8(kFrameSightingsOffset + kFrameSightingSize * k, sighting.id);
         out.f64(kFrameSightingsOffset + kFrameSightingSize * k + 1, sighting.bearing);
     }
+    const std::size_t beams = beams_carried(frame);
+    out.u16(kBeamCountOffset, static_cast<std::uint16_t>(beams));
+    const std::size_t ranges = ranges_offset(sightings);
+    for (std::size_t i = 0; i < beams; ++i) {
+        out.u16(ranges + kFrameRangeSize * i, frame.laser.range_mm[i]);
+    }
     return out.take();
 }
 
 namespace {
 
-/// The extension block of a frame whose header (and so its length, one of 52 + 9n) was
+/// The extension block of a frame whose header (and so its length, one of 52 + 9n + 2m) was
 /// checked already. Fills the optional sensors of `frame` or says what was wrong.
 DecodeError decode_frame_extension(const ByteReader& in, std::size_t length, SensorFrame& frame,
                                    std::string& reason) {
-    const std::uint8_t extras = in.u8(kFrameExtensionOffset);  // bits 4–7 reserved: ignored
+    const std::uint8_t extras = in.u8(kFrameExtensionOffset);  // bits 5–7 reserved: ignored
     const std::size_t count = in.u8(kBeaconCountOffset);
+    const std::size_t beams = in.u16(kBeamCountOffset);
     frame.has_beacon_scan = (extras & kBeaconScanBit) != 0;
-    if ((extras & (kGyroBit | kAccelerometersBit | kCompassBit | kBeaconScanBit)) == 0) {
+    frame.has_laser_scan = (extras & kLaserScanBit) != 0;
+    if ((extras & kSensorBits) == 0) {
         // A frame without optional sensors is the plain 36 bytes: one encoding per frame.
-        reason = "extension block without any sensor flag (bits 0-3 of offset 36 all clear)";
+        reason = "extension block without any sensor flag (bits 0-4 of offset 36 all clear)";
         return DecodeError::BadLength;
     }
     if (count > kMaxSightings) {
@@ -429,10 +471,22 @@ DecodeError decode_frame_extension(const ByteReader& in, std::size_t length, Sen
         reason = "beacon count " + std::to_string(count) + " without the beacon-scan flag (bit 3)";
         return DecodeError::BadLength;
     }
-    if (extended_frame_size(count) != length) {
-        reason = "beacon count " + std::to_string(count) + " needs length "
-                 + std::to_string(extended_frame_size(count)) + ", the length field says "
-                 + std::to_string(length);
+    if (beams > kMaxBeams) {
+        reason =
+            "laser beam count " + std::to_string(beams) + " exceeds " + std::to_string(kMaxBeams);
+        return DecodeError::BadLength;
+    }
+    if (beams != 0 && !frame.has_laser_scan) {
+        reason =
+            "laser beam count " + std::to_string(beams) + " without the laser-scan flag (bit 4)";
+        return DecodeError::BadLength;
+    }
+    if (extended_frame_size(count, beams) != length) {
+        reason = "beacon count " + std::to_string(count)
+                 + (beams == 0 ? std::string(" needs")
+                               : " and laser beam count " + std::to_string(beams) + " need")
+                 + " length " + std::to_string(extended_frame_size(count, beams))
+                 + ", the length field says " + std::to_string(length);
         return DecodeError::BadLength;
     }
     frame.has_gyro = (extras & kGyroBit) != 0;
@@ -460,6 +514,13 @@ DecodeError decode_frame_extension(const ByteReader& in, std::size_t length, Sen
             return DecodeError::NonFinite;
         }
     }
+    // Every u16 is a reading: a distance in mm, or an error code below 20.
+    frame.laser = {};
+    frame.laser.beam_count = static_cast<std::uint16_t>(beams);
+    const std::size_t ranges = ranges_offset(count);
+    for (std::size_t i = 0; i < beams; ++i) {
+        frame.laser.range_mm[i] = in.u16(ranges + kFrameRangeSize * i);
+    }
     return DecodeError::None;
 }
 
@@ -473,8 +534,8 @@ DecodeError decode(std::span<const std::uint8_t> datagram, FramePacket& packet,
         reason = std::string(to_string(error));
         if (error == DecodeError::BadLength) {
             reason += ": sensor frame length " + std::to_string(ByteReader(datagram).u16(6))
-                      + " is neither 36 nor 52 + 9n (n = 0 … " + std::to_string(kMaxSightings)
-                      + " beacon sightings)";
+                      + " is neither 36 nor 52 + 9n + 2m (n = 0 … " + std::to_string(kMaxSightings)
+                      + " beacon sightings, m = 0 … " + std::to_string(kMaxBeams) + " laser beams)";
         }
         return error;
     }
@@ -581,7 +642,8 @@ DecodeError decode(std::span<const std::uint8_t> datagram, ConnectReplyPacket& p
 }
 
 // --- Ground truth: 20 f64 x, 28 y, 36 θ, 44 v, 52 w, 60 right wheel surface speed,
-//     68 left, 76 true front IR distance, 84 rear, 92 u8 touching wall, 93–99 reserved.
+//     68 left, 76 true front IR distance, 84 rear, 92 u8 touching wall, 93–95 reserved,
+//     96 u32 teleports since the last reset.
 
 Bytes encode(const TruthPacket& packet) {
     const GroundTruth& t = packet.truth;
@@ -599,6 +661,7 @@ Bytes encode(const TruthPacket& packet) {
         out.f64(20 + 8 * i, values[i]);
     }
     out.u8(92, t.touching_wall ? 1 : 0);
+    out.u32(96, t.teleports);
     return out.take();
 }
 
@@ -624,6 +687,7 @@ DecodeError decode(std::span<const std::uint8_t> datagram, TruthPacket& packet) 
     t.wheel_surface_speeds = {values[5], values[6]};
     t.ir_distances = {values[7], values[8]};
     t.touching_wall = in.u8(92) != 0;
+    t.teleports = in.u32(96);
     return DecodeError::None;
 }
 

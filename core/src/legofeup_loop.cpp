@@ -8,6 +8,7 @@
 #include "legofeup/core/beacon_bearing.hpp"
 #include "legofeup/core/chi_square.hpp"
 #include "legofeup/core/compass_model.hpp"
+#include "legofeup/core/laser_process_model.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
@@ -61,6 +62,8 @@ void LegoFeupLoop::apply_tuning() {
         filter->set_ukf_params(lesson.ukf);
     }
     fusion_.set_limits(tuning.limits);
+    laser_.configure(lesson.laser, config_.map);
+    shadow_laser_.configure(lesson.laser, config_.map);
     speeds_.configure(lesson, config_.odometry);
 }
 
@@ -72,6 +75,8 @@ void LegoFeupLoop::reset() {
     filter_.reset(x0, P0);
     shadow_.reset(x0, P0);
     fusion_.reset(x0, P0, kInitialVelocityVariance);
+    laser_.reset();
+    shadow_laser_.reset();
     speeds_.reset(wrap_angle(initial.pose.theta));
     odometry_pose_ = {initial.pose.x, initial.pose.y, wrap_angle(initial.pose.theta)};
     controller_ = config_.controller;
@@ -104,6 +109,7 @@ std::vector<ConfigIssue> LegoFeupLoop::reconfigure(LoopConfig config) {
     apply_tuning();
     if (shadow_starts) {
         shadow_.reset(filter_.state(), filter_.covariance());
+        shadow_laser_.reset();
     }
     return issues;
 }
@@ -167,10 +173,20 @@ void LegoFeupLoop::estimate(const SensorFrame* frame, bool predict, double perio
 
 StepStatus LegoFeupLoop::predict_pose(PoseFilter& filter, const OdometryIncrement& increment) {
     // Eq. 11–13: X̂ ← f(X̂, U, 0), P ← ∇f_X P ∇f_Xᵀ + ∇f_q Q ∇f_qᵀ; the compass lesson's Q
-    // depends on the motion and heading (paper 004 eq. 5).
-    return config_.lesson.localisation == Localisation::Compass
-               ? filter.predict(CompassOdometryProcessModel(increment, config_.lesson.compass))
-               : filter.predict(OdometryProcessModel(increment, process_noise_));
+    // depends on the motion and heading (paper 004 eq. 5), the laser lesson's has a static
+    // and a motion-dependent part added to the pose (paper 001 eq. 11–13).
+    switch (config_.lesson.localisation) {
+        case Localisation::Compass:
+            return filter.predict(CompassOdometryProcessModel(increment, config_.lesson.compass));
+        case Localisation::Laser:
+            return filter.predict(
+                LaserProcessModel(increment, filter.state()(kTheta), config_.lesson.laser));
+        case Localisation::Walls:
+        case Localisation::Beacons:
+        case Localisation::GyroFusion:
+            break;
+    }
+    return filter.predict(OdometryProcessModel(increment, process_noise_));
 }
 
 void LegoFeupLoop::read_ir(const SensorFrame& frame) {
@@ -250,6 +266,26 @@ void LegoFeupLoop::update_with_compass(PoseFilter& filter, const LoopSnapshot& s
     }
 }
 
+// Paper 001: the scan matched against the expected scan at this filter's prediction; the
+// match (if any) is a pose observation. The shadow filter matches too, unpublished.
+void LegoFeupLoop::update_with_laser(PoseFilter& filter, const SensorFrame& frame, bool primary) {
+    if (primary) {
+        laser_.process(filter, frame.laser, snapshot_.laser);
+    } else {
+        shadow_laser_report_ = LaserUpdate{};
+        shadow_laser_.process(filter, frame.laser, shadow_laser_report_);
+    }
+}
+
+// This period's laser report starts empty but for what outlives a scan (the mismatch
+// streak, the recovery, the totals), so a period without a scan still shows them.
+void LegoFeupLoop::begin_laser_report() {
+    snapshot_.laser = LaserUpdate{};
+    if (config_.lesson.localisation == Localisation::Laser) {
+        laser_.describe(snapshot_.laser);
+    }
+}
+
 // One filter's whole period: predict (when there was odometry), then the localisation's
 // corrections. `frame` is null when only a prediction is due.
 void LegoFeupLoop::run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict,
@@ -274,6 +310,11 @@ void LegoFeupLoop::run_pose_filter(PoseFilter& filter, const SensorFrame* frame,
             break;
         case Localisation::Compass:
             update_with_compass(filter, snapshot_);
+            break;
+        case Localisation::Laser:
+            if (frame->has_laser_scan) {
+                update_with_laser(filter, *frame, primary);
+            }
             break;
         case Localisation::GyroFusion:
             break;  // runs in run_gyro_fusion
@@ -302,6 +343,7 @@ const LoopSnapshot& LegoFeupLoop::step(const SensorFrame& frame) {
     s.association = AssociationResult{};
     s.update = WallUpdateReport{};
     s.beacons = BeaconUpdates{};
+    begin_laser_report();
 
     read_ir(frame);
     speeds_.step(frame, period, s.speeds, s.readings);
@@ -326,6 +368,7 @@ const LoopSnapshot& LegoFeupLoop::step_without_frame(double time) {
     // in which the robot moved in some unknown way; its odometry arrives with the next frame.
     s.increment = {};
     s.odometry_glitch = false;
+    begin_laser_report();
     estimate(nullptr, have_counts_, period);
     for (IrSample& sample : s.ir) {
         sample = IrSample{0, IrDistance{0.0, IrStatus::Unavailable}};

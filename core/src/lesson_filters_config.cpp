@@ -12,6 +12,8 @@ const char* to_string(Localisation localisation) {
             return "gyro_fusion";
         case Localisation::Compass:
             return "compass";
+        case Localisation::Laser:
+            return "laser";
     }
     return "unknown";
 }
@@ -27,8 +29,9 @@ const char* to_string(FilterKind kind) {
 }
 
 std::optional<Localisation> localisation_from_string(std::string_view text) {
-    for (const Localisation value : {Localisation::Walls, Localisation::Beacons,
-                                     Localisation::GyroFusion, Localisation::Compass}) {
+    for (const Localisation value :
+         {Localisation::Walls, Localisation::Beacons, Localisation::GyroFusion,
+          Localisation::Compass, Localisation::Laser}) {
         if (text == to_string(value)) {
             return value;
         }

@@ -1,7 +1,9 @@
 #include "legofeup/core/loop_config.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 namespace legofeup {
@@ -113,6 +115,9 @@ void check_lesson_filters(ConfigChecker& check, const LessonFilters& lesson) {
     check_variance(check, "gyro_fusion.r_v_encoders", fusion.r_v_encoders);
     check_variance(check, "gyro_fusion.r_w_encoders", fusion.r_w_encoders);
     check_variance(check, "gyro_fusion.r_w_gyro", fusion.r_w_gyro);
+    check.require(fusion.encoder_gate_probability >= 0.0 && fusion.encoder_gate_probability < 1.0,
+                  "gyro_fusion.encoder_gate_probability", fusion.encoder_gate_probability,
+                  "must be in [0, 1) (0 switches the slip gate off)");
     const CompassTuning& compass = lesson.compass;
     check.in_range("compass.k_d", compass.k_d, 0.0, 100.0);
     check.in_range("compass.k_dtheta", compass.k_dtheta, 0.0, 100.0);
@@ -123,6 +128,41 @@ void check_lesson_filters(ConfigChecker& check, const LessonFilters& lesson) {
     check.positive("calibration.gyro_counts_per_dps", calibration.gyro_counts_per_dps, 1000.0);
     check.positive("calibration.accel_counts_per_g", calibration.accel_counts_per_g, 1e5);
     check.in_range("calibration.gravity", calibration.gravity, 1.0, 100.0);
+}
+
+// Laser scan matching (paper 001), fields "lesson.laser.<name>". The static and dynamic
+// parts of eq. 13's Q may each be 0 (no slip at rest, or no motion-dependent error): the
+// filter's variance floor keeps P regular even when a whole row of Q is 0. The ICP and
+// scanner geometry are checked by their own validate() (appended by the caller).
+void check_laser(ConfigChecker& check, const LaserTuning& laser,
+                 const std::shared_ptr<const OccupancyGrid>& map, bool in_use) {
+    const std::string p = "lesson.laser.";
+    for (const auto& [name, value] :
+         {std::pair{"q_x_static", laser.q_x_static}, std::pair{"q_y_static", laser.q_y_static},
+          std::pair{"q_theta_static", laser.q_theta_static},
+          std::pair{"q_x_dynamic", laser.q_x_dynamic}, std::pair{"q_y_dynamic", laser.q_y_dynamic},
+          std::pair{"q_theta_dynamic", laser.q_theta_dynamic}}) {
+        check.in_range(p + name, value, 0.0, kMaxUserVariance);
+    }
+    check_variance(check, p + "r_x", laser.r_x);
+    check_variance(check, p + "r_y", laser.r_y);
+    check_variance(check, p + "r_theta", laser.r_theta);
+    check.in_range(p + "min_matched_points", laser.min_matched_points, 0.0, kMaxScanBeams);
+    check.in_range(p + "recovery_after_mismatches", laser.recovery_after_mismatches, 1.0, 1e6);
+    check.positive(p + "recovery_covariance_factor", laser.recovery_covariance_factor, 1e6);
+    check.positive(p + "recovery_correspondence_factor", laser.recovery_correspondence_factor, 1.0);
+    check.in_range(p + "mount.x", laser.mount.x, -10.0, 10.0);
+    check.in_range(p + "mount.y", laser.mount.y, -10.0, 10.0);
+    check.in_range(p + "mount.theta", laser.mount.theta, -2.0 * kPi, 2.0 * kPi);
+    if (in_use) {
+        check.require(map != nullptr && !map->empty(), "map", 0.0,
+                      "the laser localisation needs the filter's occupancy-grid map");
+    }
+}
+
+void append(std::vector<ConfigIssue>& issues, std::vector<ConfigIssue> more) {
+    issues.insert(issues.end(), std::make_move_iterator(more.begin()),
+                  std::make_move_iterator(more.end()));
 }
 
 void check_beacons(ConfigChecker& check, const BeaconMap& beacons) {
@@ -213,6 +253,10 @@ std::vector<ConfigIssue> validate(const LoopConfig& config) {
     check_controller(check, config.controller);
 
     check_lesson_filters(check, config.lesson);
+    check_laser(check, config.lesson.laser, config.map,
+                config.lesson.localisation == Localisation::Laser);
+    append(issues, validate(config.lesson.laser.icp, "lesson.laser.icp"));
+    append(issues, validate(config.lesson.laser.geometry, "lesson.laser.geometry"));
     check_beacons(check, config.beacons);
     check.positive("simulator.control_period", config.control_period, 10.0);
 

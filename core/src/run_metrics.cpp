@@ -16,9 +16,16 @@ RunMetricsAccumulator::RunMetricsAccumulator() {
 }
 
 void RunMetricsAccumulator::add(const LoopSnapshot& snapshot, const Pose2& truth) {
+    add_step(snapshot, truth, false);
+}
+
+void RunMetricsAccumulator::add_step(const LoopSnapshot& snapshot, const Pose2& truth,
+                                     bool teleported) {
     RunMetrics& m = metrics_;
     if (m.steps == 0) {
         first_time_ = snapshot.time;
+        start_truth_ = truth;
+        previous_truth_ = truth;
     }
     ++m.steps;
     m.duration = snapshot.time - first_time_;
@@ -39,6 +46,11 @@ void RunMetricsAccumulator::add(const LoopSnapshot& snapshot, const Pose2& truth
     m.final_position_error = position_error;
     m.final_heading_error = heading_error;
     m.final_odometry_position_error = odometry_error;
+    m.odometry_end_to_start = std::hypot(snapshot.odometry_pose.x - start_truth_.x,
+                                         snapshot.odometry_pose.y - start_truth_.y);
+    m.estimate_end_to_start =
+        std::hypot(snapshot.estimate(kX) - start_truth_.x, snapshot.estimate(kY) - start_truth_.y);
+    add_kidnapping(snapshot.time, truth, teleported, position_error);
 
     m.observations += snapshot.observation_available ? 1U : 0U;
     if (snapshot.observation_available) {
@@ -76,6 +88,14 @@ void RunMetricsAccumulator::add(const LoopSnapshot& snapshot, const Pose2& truth
             sum_beacon_nis_ += update.nis;
         }
     }
+    const LaserUpdate& laser = snapshot.laser;
+    if (laser.scan_received && !laser.wrong_beam_count) {
+        ++m.laser_scans;
+    }
+    m.laser_matches += laser.matched ? 1U : 0U;
+    m.laser_skipped_scans += laser.wrong_beam_count ? 1U : 0U;
+    m.laser_recoveries += laser.recovery_triggered ? 1U : 0U;
+
     if (snapshot.readings.has_compass) {
         const double error = wrap_angle(snapshot.readings.compass_heading - truth.theta);
         sum_compass_squared_ += error * error;
@@ -105,8 +125,32 @@ void RunMetricsAccumulator::add(const LoopSnapshot& snapshot, const Pose2& truth
     sum_shadow_filter_seconds_ += snapshot.shadow_filter_seconds;
 }
 
+// A kidnapping is a teleport the truth reports or, for truths without that count, a jump no
+// drive could make. It restarts the wait for the error to settle; every step at or above the
+// threshold restarts it too, so settled_since_ ends as the start of the final good stretch.
+void RunMetricsAccumulator::add_kidnapping(double time, const Pose2& truth, bool teleported,
+                                           double position_error) {
+    RunMetrics& m = metrics_;
+    const double jump = std::hypot(truth.x - previous_truth_.x, truth.y - previous_truth_.y);
+    const double turn = std::abs(wrap_angle(truth.theta - previous_truth_.theta));
+    previous_truth_ = truth;
+    if (teleported || jump > kKidnapPositionJump || turn > kKidnapHeadingJump) {
+        ++m.kidnappings;
+        kidnap_time_ = time;
+        settled_ = false;
+    }
+    if (position_error >= kRecoveredPositionError) {
+        settled_ = false;
+    } else if (!settled_) {
+        settled_ = true;
+        settled_since_ = time;
+    }
+}
+
 void RunMetricsAccumulator::add(const LoopSnapshot& snapshot, const GroundTruth& truth) {
-    add(snapshot, truth.pose);
+    const bool teleported = metrics_.steps > 0 && truth.teleports != previous_teleports_;
+    previous_teleports_ = truth.teleports;
+    add_step(snapshot, truth.pose, teleported);
     RunMetrics& m = metrics_;
     const SpeedEstimates& speeds = snapshot.speeds;
     if (!speeds.valid) {
@@ -166,6 +210,18 @@ RunMetrics RunMetricsAccumulator::result() const {
         m.mean_nees = sum_nees_ / static_cast<double>(nees_count_);
         m.nees_inside_fraction =
             static_cast<double>(nees_inside_) / static_cast<double>(nees_count_);
+    }
+    if (m.laser_scans > 0) {
+        m.laser_match_fraction =
+            static_cast<double>(m.laser_matches) / static_cast<double>(m.laser_scans);
+    }
+    if (m.final_position_error > 0.0) {
+        m.odometry_to_estimate_final_error_ratio =
+            m.final_odometry_position_error / m.final_position_error;
+    }
+    if (m.kidnappings > 0 && settled_) {
+        m.time_to_recover = settled_since_ - kidnap_time_;
+        m.kidnap_recovered = true;
     }
     if (m.updates_applied > 0) {
         const auto updates = static_cast<double>(m.updates_applied);

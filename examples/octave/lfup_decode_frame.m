@@ -1,12 +1,14 @@
 function [frame, reason] = lfup_decode_frame (bytes)
-  % LFUP_DECODE_FRAME  A SensorFrame (type 0x01, 36 bytes, or 52 + 9n with the extension
-  %   block of the optional sensors) from a datagram.
+  % LFUP_DECODE_FRAME  A SensorFrame (type 0x01, 36 bytes, or 52 + 9n + 2m with the
+  %   extension block of the optional sensors) from a datagram.
   %   FRAME has sequence, time_us (uint64), time (s), encoders [right left] (counts,
   %   1 count = 1 degree), ir_adc [front rear] (raw 10-bit A/D), ir_valid [front rear]
   %   and the flags watchdog, paused and reset; and the optional sensors, each [] when the
   %   frame does not carry it: gyro_raw (counts), accel_raw [right_fwd right_left; left_fwd
-  %   left_left] (counts), compass_deg (whole degrees) and beacons, an n-by-2 matrix of
-  %   [id bearing_rad] rows (zeros (0, 2): the scanner saw nothing).
+  %   left_left] (counts), compass_deg (whole degrees), beacons, an n-by-2 matrix of
+  %   [id bearing_rad] rows (zeros (0, 2): the scanner saw nothing), and laser_mm, a row of
+  %   the laser scan's ranges in whole mm (values below 20 are error codes: 0 no echo,
+  %   1 too near, 2 dropout).
   %   REASON is "" or why it was dropped.
   [header, reason] = lfup_decode_header (bytes, 0x01);
   frame = struct ();
@@ -28,18 +30,22 @@ function [frame, reason] = lfup_decode_frame (bytes)
   frame.accel_raw = [];
   frame.compass_deg = [];
   frame.beacons = [];
+  frame.laser_mm = [];
   if (numel (bytes) > 36)
     [frame, reason] = decode_extension (bytes, frame);
   endif
 endfunction
 
 function [frame, reason] = decode_extension (bytes, frame)
-  % docs/protocol.md, "SensorFrame extension"; the length (52 + 9n) was checked already.
+  % docs/protocol.md, "SensorFrame extension"; the length (52 + 9n + 2m) was checked
+  % already.
   reason = "";
   extras = double (bytes(37));
   count = double (bytes(38));
-  if (bitand (extras, 15) == 0 || count > 8 || (count > 0 && ! bitand (extras, 8))
-      || numel (bytes) != 52 + 9 * count)
+  beams = double (lfup_from_le (bytes(51:52), "uint16"));
+  if (bitand (extras, 31) == 0 || count > 8 || (count > 0 && ! bitand (extras, 8))
+      || beams > 1024 || (beams > 0 && ! bitand (extras, 16))
+      || numel (bytes) != 52 + 9 * count + 2 * beams)
     reason = "bad_length";
     return;
   endif
@@ -63,5 +69,10 @@ function [frame, reason] = decode_extension (bytes, frame)
   endif
   if (bitand (extras, 8))
     frame.beacons = beacons;
+  endif
+  if (bitand (extras, 16))
+    at = 52 + 9 * count;  % 0-based offset of the first range
+    frame.laser_mm = double (lfup_from_le (bytes(at + 1:at + 2 * beams), "uint16"));
+    frame.laser_mm = reshape (frame.laser_mm, 1, beams);
   endif
 endfunction

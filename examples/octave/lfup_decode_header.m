@@ -8,7 +8,7 @@ function [header, reason] = lfup_decode_header (bytes, accepted_types)
   header = struct ("type", 0, "sequence", 0, "time_us", uint64 (0));
   bytes = uint8 (bytes(:).');
   n = numel (bytes);
-  if (n > 512)
+  if (n > 2172)                % the longest frame: 52 + 9*8 sightings + 2*1024 beams
     reason = "oversized";
   elseif (n < 20)
     reason = "truncated";
@@ -37,7 +37,9 @@ function [header, reason] = lfup_decode_header (bytes, accepted_types)
 endfunction
 
 function ok = valid_length (type, length)
-  % The type's size; a sensor frame may also carry the extension block: 52 + 9n, n <= 8.
+  % The type's size; a sensor frame may also carry the extension block: 52 + 9n + 2m,
+  % n <= 8 beacon sightings, m <= 1024 laser beams.
+  ranges = length - 52 - 9 * (0:8);  % bytes left for the laser ranges, for each n
   ok = length == lfup_packet_size (type) ...
-       || (type == 0x01 && length >= 52 && length <= 124 && mod (length - 52, 9) == 0);
+       || (type == 0x01 && any (ranges >= 0 & ranges <= 2048 & mod (ranges, 2) == 0));
 endfunction

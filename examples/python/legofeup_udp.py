@@ -29,7 +29,9 @@ from typing import Deque, Dict, List, Optional, Tuple
 MAGIC = b"LFUP"
 PROTOCOL_VERSION = 1
 HEADER_SIZE = 20
-MAX_PACKET_SIZE = 512
+# The longest packet: a sensor frame with 8 beacon sightings and a 1024-beam laser scan,
+# 52 + 9·8 + 2·1024 bytes.
+MAX_PACKET_SIZE = 2172
 # The largest header time, 2^50 µs (35 years): up to it µs -> s -> µs gives back the same
 # integer, so decoding and re-encoding never changes a time. Larger ones are dropped.
 MAX_TIME_US = 1 << 50
@@ -79,23 +81,35 @@ FLAG_PAUSED = 1 << 3
 FLAG_RESET = 1 << 4
 
 # Sensor frame extension (docs/protocol.md, "SensorFrame extension"): present when the
-# frame's length is 52 + 9n instead of 36. The extras byte (offset 36) says which optional
-# sensors the frame carries.
+# frame's length is 52 + 9n + 2m instead of 36 (n beacon sightings, m laser beams). The extras
+# byte (offset 36) says which optional sensors the frame carries.
 EXTRA_GYRO = 1 << 0
 EXTRA_ACCELEROMETERS = 1 << 1
 EXTRA_COMPASS = 1 << 2
 EXTRA_BEACON_SCAN = 1 << 3
+EXTRA_LASER_SCAN = 1 << 4
+EXTRA_SENSORS = 0x1F      # bits 0-4; bits 5-7 are reserved
 FRAME_SIGHTINGS_OFFSET = 52
 FRAME_SIGHTING_SIZE = 9   # u8 id + f64 bearing
+FRAME_RANGE_SIZE = 2      # u16 per laser beam
 MAX_BEACON_SIGHTINGS = 8
+MAX_SCAN_BEAMS = 1024
+# Laser ranges are whole millimetres; values below 20 are error codes.
+RANGE_NO_ECHO = 0         # nothing within the maximum range
+RANGE_TOO_NEAR = 1        # closer than the minimum range
+RANGE_DROPOUT = 2         # the echo was too weak to measure
+RANGE_FIRST_VALID = 20
 
 
 def frame_length_valid(length: int) -> bool:
-    """36 (the plain frame) or 52 + 9n with n = 0 … 8 sightings."""
-    extra = length - FRAME_SIGHTINGS_OFFSET
-    return length == PACKET_SIZES[PacketType.SENSOR_FRAME] or (
-        0 <= extra <= FRAME_SIGHTING_SIZE * MAX_BEACON_SIGHTINGS
-        and extra % FRAME_SIGHTING_SIZE == 0)
+    """36 (the plain frame) or 52 + 9n + 2m with n = 0 … 8 sightings, m = 0 … 1024 beams."""
+    if length == PACKET_SIZES[PacketType.SENSOR_FRAME]:
+        return True
+    for sightings in range(MAX_BEACON_SIGHTINGS + 1):
+        ranges = length - FRAME_SIGHTINGS_OFFSET - FRAME_SIGHTING_SIZE * sightings
+        if 0 <= ranges <= FRAME_RANGE_SIZE * MAX_SCAN_BEAMS and ranges % FRAME_RANGE_SIZE == 0:
+            return True
+    return False
 
 
 # Control request flag bits (offset 25, u8).
@@ -238,7 +252,8 @@ def _open(datagram: bytes, *accepted: PacketType) -> Header:
 # --- Robot stream ---------------------------------------------------------------------------
 
 _FRAME = struct.Struct("<iiHHHH")  # at offset 20: counts R, L, IR front, IR rear, flags, 0
-# At offset 36: extras, beacon count, gyro, accel R fwd, R left, L fwd, L left, compass, 0
+# At offset 36: extras, beacon count, gyro, accel R fwd, R left, L fwd, L left, compass,
+# laser beam count
 _FRAME_EXTENSION = struct.Struct("<BBhhhhhhH")
 _SIGHTING = struct.Struct("<Bd")  # beacon id, bearing (rad)
 
@@ -263,6 +278,11 @@ class SensorFrame:
     compass_deg: Optional[int] = None  # whole degrees, counter-clockwise from +x
     # [(beacon id, bearing in rad relative to the heading)]; [] = scanned, saw nothing
     beacons: Optional[List[Tuple[int, float]]] = None
+    # The laser scan completed this period: each beam's range in whole mm, or an error code
+    # below 20 (RANGE_NO_ECHO, RANGE_TOO_NEAR, RANGE_DROPOUT). Beam i points at
+    # angle_min + i·angle_increment from the scanner's forward axis (URG-04LX: 682 beams,
+    # 2π/1024 apart, centred on the axis).
+    laser_mm: Optional[List[int]] = None
 
     @property
     def time(self) -> float:
@@ -271,7 +291,7 @@ class SensorFrame:
     @property
     def has_extension(self) -> bool:
         return any(v is not None for v in (self.gyro_raw, self.accel_raw, self.compass_deg,
-                                           self.beacons))
+                                           self.beacons, self.laser_mm))
 
 
 def encode_frame(frame: SensorFrame) -> bytes:
@@ -286,16 +306,21 @@ def encode_frame(frame: SensorFrame) -> bytes:
     if not frame.has_extension:
         return plain
     sightings = (frame.beacons or [])[:MAX_BEACON_SIGHTINGS]
+    ranges = (frame.laser_mm or [])[:MAX_SCAN_BEAMS]
     extras = ((EXTRA_GYRO if frame.gyro_raw is not None else 0)
               | (EXTRA_ACCELEROMETERS if frame.accel_raw is not None else 0)
               | (EXTRA_COMPASS if frame.compass_deg is not None else 0)
-              | (EXTRA_BEACON_SCAN if frame.beacons is not None else 0))
+              | (EXTRA_BEACON_SCAN if frame.beacons is not None else 0)
+              | (EXTRA_LASER_SCAN if frame.laser_mm is not None else 0))
     (right_fwd, right_left), (left_fwd, left_left) = frame.accel_raw or ((0, 0), (0, 0))
-    length = FRAME_SIGHTINGS_OFFSET + FRAME_SIGHTING_SIZE * len(sightings)
+    length = (FRAME_SIGHTINGS_OFFSET + FRAME_SIGHTING_SIZE * len(sightings)
+              + FRAME_RANGE_SIZE * len(ranges))
     return (plain[:6] + struct.pack("<H", length) + plain[8:]
             + _FRAME_EXTENSION.pack(extras, len(sightings), frame.gyro_raw or 0, right_fwd,
-                                    right_left, left_fwd, left_left, frame.compass_deg or 0, 0)
-            + b"".join(_SIGHTING.pack(beacon_id, bearing) for beacon_id, bearing in sightings))
+                                    right_left, left_fwd, left_left, frame.compass_deg or 0,
+                                    len(ranges))
+            + b"".join(_SIGHTING.pack(beacon_id, bearing) for beacon_id, bearing in sightings)
+            + struct.pack(f"<{len(ranges)}H", *ranges))
 
 
 def decode_frame(datagram: bytes) -> SensorFrame:
@@ -311,27 +336,35 @@ def decode_frame(datagram: bytes) -> SensorFrame:
 
 
 def _decode_frame_extension(datagram: bytes, frame: SensorFrame) -> None:
-    """The optional sensors after offset 36 (the length is 52 + 9n, checked already)."""
+    """The optional sensors after offset 36 (the length is 52 + 9n + 2m, checked already)."""
     (extras, count, gyro, right_fwd, right_left, left_fwd, left_left, compass,
-     _reserved) = _FRAME_EXTENSION.unpack_from(datagram, 36)
-    if extras & 0x0F == 0:
+     beams) = _FRAME_EXTENSION.unpack_from(datagram, 36)
+    if extras & EXTRA_SENSORS == 0:
         raise DecodeError("bad_length", "extension block without any sensor flag")
     if count > MAX_BEACON_SIGHTINGS:
         raise DecodeError("bad_length", f"beacon count {count} exceeds {MAX_BEACON_SIGHTINGS}")
     if count and not extras & EXTRA_BEACON_SCAN:
         raise DecodeError("bad_length", f"beacon count {count} without the beacon-scan flag")
-    needed = FRAME_SIGHTINGS_OFFSET + FRAME_SIGHTING_SIZE * count
+    if beams > MAX_SCAN_BEAMS:
+        raise DecodeError("bad_length", f"laser beam count {beams} exceeds {MAX_SCAN_BEAMS}")
+    if beams and not extras & EXTRA_LASER_SCAN:
+        raise DecodeError("bad_length", f"laser beam count {beams} without the laser-scan flag")
+    ranges_offset = FRAME_SIGHTINGS_OFFSET + FRAME_SIGHTING_SIZE * count
+    needed = ranges_offset + FRAME_RANGE_SIZE * beams
     if needed != len(datagram):
-        raise DecodeError("bad_length", f"beacon count {count} needs length {needed}, "
-                                        f"the length field says {len(datagram)}")
+        raise DecodeError("bad_length", f"beacon count {count} and laser beam count {beams} "
+                                        f"need length {needed}, the length field says "
+                                        f"{len(datagram)}")
     sightings = [_SIGHTING.unpack_from(datagram, FRAME_SIGHTINGS_OFFSET + FRAME_SIGHTING_SIZE * k)
                  for k in range(count)]
     _require_finite(*(bearing for _id, bearing in sightings))
+    ranges = list(struct.unpack_from(f"<{beams}H", datagram, ranges_offset))
     frame.gyro_raw = gyro if extras & EXTRA_GYRO else None
     frame.accel_raw = (((right_fwd, right_left), (left_fwd, left_left))
                        if extras & EXTRA_ACCELEROMETERS else None)
     frame.compass_deg = compass if extras & EXTRA_COMPASS else None
     frame.beacons = sightings if extras & EXTRA_BEACON_SCAN else None
+    frame.laser_mm = ranges if extras & EXTRA_LASER_SCAN else None
 
 
 _COMMAND = struct.Struct("<dd")  # at offset 20: V1 (right), V2 (left), m/s
@@ -409,7 +442,8 @@ def decode_connect_reply(datagram: bytes) -> ConnectReply:
 
 # --- Truth stream ---------------------------------------------------------------------------
 
-_TRUTH = struct.Struct("<9dB7x")  # at offset 20: nine reals, touching wall, reserved
+# At offset 20: nine reals, touching wall, 3 reserved bytes, teleports (u32 at offset 96).
+_TRUTH = struct.Struct("<9dB3xI")
 
 
 @dataclass
@@ -426,6 +460,9 @@ class GroundTruth:
     ir_front_distance: float  # m, what the beam really measured before noise and A/D
     ir_rear_distance: float
     touching_wall: bool
+    # Times the robot was moved instantly since the last reset (teleports, kidnappings): a
+    # change between two packets says it happened in between.
+    teleports: int = 0
 
     @property
     def time(self) -> float:
@@ -437,16 +474,16 @@ def encode_truth(truth: GroundTruth) -> bytes:
             + _TRUTH.pack(truth.x, truth.y, truth.theta, truth.v, truth.w,
                           truth.right_wheel_surface_speed, truth.left_wheel_surface_speed,
                           truth.ir_front_distance, truth.ir_rear_distance,
-                          1 if truth.touching_wall else 0))
+                          1 if truth.touching_wall else 0, truth.teleports))
 
 
 def decode_truth(datagram: bytes) -> GroundTruth:
     header = _open(datagram, PacketType.GROUND_TRUTH)
-    (x, y, theta, v, w, right_speed, left_speed, front, rear,
-     touching) = _TRUTH.unpack_from(datagram, HEADER_SIZE)
+    (x, y, theta, v, w, right_speed, left_speed, front, rear, touching,
+     teleports) = _TRUTH.unpack_from(datagram, HEADER_SIZE)
     _require_finite(x, y, theta, v, w, right_speed, left_speed, front, rear)
     return GroundTruth(header.sequence, header.time_us, x, y, theta, v, w, right_speed,
-                       left_speed, front, rear, touching != 0)
+                       left_speed, front, rear, touching != 0, teleports)
 
 
 # --- Control stream -------------------------------------------------------------------------

@@ -123,9 +123,13 @@ class TableReader {
                 return;
             }
         }
-        if (key == "world") {
-            std::filesystem::path path(std::get<std::string>(*value));
-            if (!path.empty() && path.is_relative() && !base_.empty()) {
+        if (setting->built_in_files) {
+            // A file: relative to this configuration's directory, unless a built-in's name.
+            const std::string& text = std::get<std::string>(*value);
+            const auto& built_in = setting->built_in_files();
+            std::filesystem::path path(text);
+            if (std::find(built_in.begin(), built_in.end(), text) == built_in.end() && !path.empty()
+                && path.is_relative() && !base_.empty()) {
                 path = base_ / path;
             }
             value = path.string();

@@ -6,6 +6,8 @@
 #include <type_traits>
 
 #include "legofeup/core/angles.hpp"
+#include "legofeup/lessons/map_file.hpp"
+#include "legofeup/lessons/world_file.hpp"
 
 namespace legofeup::lessons {
 namespace {
@@ -63,11 +65,44 @@ Setting point(std::string key, std::string field, std::string help, Access acces
                           access);
 }
 
+// A whole number bound to an int member; the reader refuses negative numbers, validate()
+// the rest of the range.
+template <class Access>
+Setting whole(std::string key, std::string field, std::string help, Access access) {
+    Setting s;
+    s.key = std::move(key);
+    s.field = std::move(field);
+    s.help = std::move(help);
+    s.type = SettingType::Integer;
+    s.get = [access](const RunConfig& c) -> SettingValue {
+        return static_cast<std::int64_t>(access(c));
+    };
+    s.set = [access](RunConfig& c, const SettingValue& v) {
+        access(c) = static_cast<int>(std::get<std::int64_t>(v));
+    };
+    return s;
+}
+
+// A Text setting naming a file: a built-in's name, or a path relative to the configuration.
+Setting file(std::string key, std::string field, std::string help, std::string RunConfig::*member,
+             const std::vector<std::string>& (*built_in_names)()) {
+    Setting s;
+    s.key = std::move(key);
+    s.field = std::move(field);
+    s.help = std::move(help);
+    s.type = SettingType::Text;
+    s.get = [member](const RunConfig& c) -> SettingValue { return c.*member; };
+    s.set = [member](RunConfig& c, const SettingValue& v) { c.*member = std::get<std::string>(v); };
+    s.built_in_files = built_in_names;
+    return s;
+}
+
 // One part of a pose override (the world's start pose unless set).
 Setting pose_part(std::string key, std::string field, std::string help,
                   PoseOverride RunConfig::*pose, std::optional<double> PoseOverride::*part,
                   double scale = 1.0) {
-    Setting s{std::move(key), std::move(field), std::move(help), SettingType::Real, {}, {}, {}, {}};
+    Setting s{
+        std::move(key), std::move(field), std::move(help), SettingType::Real, {}, {}, {}, {}, {}};
     s.get = [pose, part, scale](const RunConfig& c) -> SettingValue {
         return (c.*pose.*part).value_or(0.0) / scale;
     };
@@ -84,7 +119,7 @@ template <class Enum, class Access, class Parse>
 Setting choice(std::string key, std::string field, std::string help,
                std::initializer_list<Enum> values, Parse parse, Access access) {
     Setting s{
-        std::move(key), std::move(field), std::move(help), SettingType::Choice, {}, {}, {}, {}};
+        std::move(key), std::move(field), std::move(help), SettingType::Choice, {}, {}, {}, {}, {}};
     for (const Enum value : values) {
         s.choices.emplace_back(to_string(value));
     }
@@ -116,9 +151,9 @@ void add_lesson_filter_settings(std::vector<Setting>& s) {
     s.push_back(choice(
         "localisation.method", "localisation.method",
         "what corrects the odometry: walls (IR), beacons (bearings), gyro_fusion (5-state EKF "
-        "with encoders, accelerometers, gyro) or compass",
+        "with encoders, accelerometers, gyro), compass or laser (scan matching in a map)",
         {Localisation::Walls, Localisation::Beacons, Localisation::GyroFusion,
-         Localisation::Compass},
+         Localisation::Compass, Localisation::Laser},
         localisation_from_string, [](auto& c) -> auto& { return c.lesson.localisation; }));
 
     s.push_back(real(
@@ -195,6 +230,11 @@ void add_lesson_filter_settings(std::vector<Setting>& s) {
         "gyro_fusion.use_accelerometers", "gyro_fusion.use_accelerometers",
         "false: predict at constant velocity",
         [](auto& c) -> auto& { return c.lesson.gyro_fusion.use_accelerometers; }));
+    s.push_back(real(
+        "gyro_fusion.encoder_gate_probability", "gyro_fusion.encoder_gate_probability",
+        "slip gate: reject the encoders' (v, ω) when their NIS against the gyro-corrected state "
+        "exceeds the χ²(2) quantile at this probability; 0: off",
+        [](auto& c) -> auto& { return c.lesson.gyro_fusion.encoder_gate_probability; }));
 
     s.push_back(real(
         "compass.k_d", "compass.k_d", "eq. 5: translation error coefficient k_D, m per m",
@@ -294,6 +334,190 @@ void add_simulated_sensor_settings(std::vector<Setting>& s) {
         [](auto& c) -> auto& { return c.simulator.displacement.dtheta; }));
 }
 
+// A scanner's geometry and mount under `section` ("laser" for the filter's belief,
+// "laser_scanner" for the simulated scanner), validated as "<field_prefix>.geometry.*" and
+// "<field_prefix>.mount.*".
+template <class Access>
+void add_scanner_geometry(std::vector<Setting>& s, const std::string& section,
+                          const std::string& field_prefix, Access scanner) {
+    const std::string k = section + ".";
+    const std::string g = field_prefix + ".geometry.";
+    const std::string m = field_prefix + ".mount.";
+    s.push_back(whole(
+        k + "beam_count", g + "beam_count",
+        "beams per scan (1 … 1024; URG-04LX: 682)", [scanner](auto& c) -> auto& {
+            return scanner(c).geometry.beam_count;
+        }));
+    s.push_back(degrees(
+        k + "angle_min_deg", g + "angle_min",
+        "direction of the first beam, ° counter-clockwise from the scanner's forward axis",
+        [scanner](auto& c) -> auto& { return scanner(c).geometry.angle_min; }));
+    s.push_back(degrees(
+        k + "angle_increment_deg", g + "angle_increment",
+        "angle between neighbouring beams, ° (field of view = beam_count · increment)",
+        [scanner](auto& c) -> auto& { return scanner(c).geometry.angle_increment; }));
+    s.push_back(real(
+        k + "range_min", g + "range_min",
+        "shorter readings are errors, m", [scanner](auto& c) -> auto& {
+            return scanner(c).geometry.range_min;
+        }));
+    s.push_back(real(
+        k + "range_max", g + "range_max",
+        "longest reading the scanner reports, m", [scanner](auto& c) -> auto& {
+            return scanner(c).geometry.range_max;
+        }));
+    s.push_back(real(
+        k + "mount_x", m + "x",
+        "scanner position ahead of the axle centre, m", [scanner](auto& c) -> auto& {
+            return scanner(c).mount.x;
+        }));
+    s.push_back(real(
+        k + "mount_y", m + "y",
+        "scanner position left of the centre line, m", [scanner](auto& c) -> auto& {
+            return scanner(c).mount.y;
+        }));
+    s.push_back(degrees(
+        k + "mount_heading_deg", m + "theta",
+        "scanner's forward axis relative to the robot's, °", [scanner](auto& c) -> auto& {
+            return scanner(c).mount.theta;
+        }));
+}
+
+// [laser]: the laser scan-matching filter of paper 001 (validated as "lesson.laser.*").
+void add_laser_settings(std::vector<Setting>& s) {
+    const auto laser_real = [&s](const std::string& name, std::string help, auto access) {
+        s.push_back(real("laser." + name, "lesson.laser." + name, std::move(help), access));
+    };
+    laser_real(
+        "q_x_static", "eq. 13: Q of x added at every prediction, m²",
+        [](auto& c) -> auto& { return c.lesson.laser.q_x_static; });
+    laser_real(
+        "q_y_static", "eq. 13: Q of y added at every prediction, m²",
+        [](auto& c) -> auto& { return c.lesson.laser.q_y_static; });
+    laser_real(
+        "q_theta_static", "eq. 13: Q of θ added at every prediction, rad²",
+        [](auto& c) -> auto& { return c.lesson.laser.q_theta_static; });
+    laser_real(
+        "q_x_dynamic", "eq. 13: Q of x per metre of odometry increment |Δx|, m²/m",
+        [](auto& c) -> auto& { return c.lesson.laser.q_x_dynamic; });
+    laser_real(
+        "q_y_dynamic", "eq. 13: Q of y per metre of odometry increment |Δy|, m²/m",
+        [](auto& c) -> auto& { return c.lesson.laser.q_y_dynamic; });
+    laser_real(
+        "q_theta_dynamic", "eq. 13: Q of θ per radian of odometry increment |Δθ|, rad²/rad",
+        [](auto& c) -> auto& { return c.lesson.laser.q_theta_dynamic; });
+    laser_real(
+        "r_x", "eq. 16: R of the ICP pose observation's x, m²",
+        [](auto& c) -> auto& { return c.lesson.laser.r_x; });
+    laser_real(
+        "r_y", "eq. 16: R of the ICP pose observation's y, m²",
+        [](auto& c) -> auto& { return c.lesson.laser.r_y; });
+    laser_real(
+        "r_theta", "eq. 16: R of the ICP pose observation's θ, rad²",
+        [](auto& c) -> auto& { return c.lesson.laser.r_theta; });
+
+    const auto icp_real = [&s](const std::string& name, std::string help, auto access) {
+        s.push_back(real("laser.icp_" + name, "lesson.laser.icp." + name, std::move(help), access));
+    };
+    s.push_back(choice(
+        "laser.icp_metric", "lesson.laser.icp.metric",
+        "ICP error: point_to_point or point_to_line (distance to the map's surface)",
+        {IcpMetric::PointToPoint, IcpMetric::PointToLine}, icp_metric_from_string,
+        [](auto& c) -> auto& { return c.lesson.laser.icp.metric; }));
+    s.push_back(whole(
+        "laser.icp_max_iterations", "lesson.laser.icp.max_iterations",
+        "ICP gives up (not converged) after this many iterations",
+        [](auto& c) -> auto& { return c.lesson.laser.icp.max_iterations; }));
+    icp_real(
+        "max_correspondence_distance",
+        "ICP: a scan point farther than this from the expected scan is an outlier, m",
+        [](auto& c) -> auto& { return c.lesson.laser.icp.max_correspondence_distance; });
+    icp_real(
+        "trim_fraction", "ICP: fraction of the worst pairs dropped each iteration, 0 … 0.9",
+        [](auto& c) -> auto& { return c.lesson.laser.icp.trim_fraction; });
+    icp_real(
+        "translation_epsilon", "ICP converged when a step moves less than this, m …",
+        [](auto& c) -> auto& { return c.lesson.laser.icp.translation_epsilon; });
+    icp_real(
+        "rotation_epsilon", "… and turns less than this, rad",
+        [](auto& c) -> auto& { return c.lesson.laser.icp.rotation_epsilon; });
+
+    s.push_back(whole(
+        "laser.min_matched_points", "lesson.laser.min_matched_points",
+        "mismatch gate: a match with fewer inlier points is not used (prediction only)",
+        [](auto& c) -> auto& { return c.lesson.laser.min_matched_points; }));
+    s.push_back(boolean(
+        "laser.kidnap_recovery", "lesson.laser.kidnap_recovery",
+        "after many mismatches in a row, inflate P and tighten ICP (paper §IV-B)",
+        [](auto& c) -> auto& { return c.lesson.laser.kidnap_recovery; }));
+    s.push_back(whole(
+        "laser.recovery_after_mismatches", "lesson.laser.recovery_after_mismatches",
+        "consecutive mismatches that start the recovery",
+        [](auto& c) -> auto& { return c.lesson.laser.recovery_after_mismatches; }));
+    laser_real(
+        "recovery_covariance_factor", "recovery: P is multiplied by this",
+        [](auto& c) -> auto& { return c.lesson.laser.recovery_covariance_factor; });
+    laser_real(
+        "recovery_correspondence_factor",
+        "recovery: ICP's correspondence distance is multiplied by this (≤ 1: stricter)",
+        [](auto& c) -> auto& { return c.lesson.laser.recovery_correspondence_factor; });
+
+    add_scanner_geometry(
+        s, "laser", "lesson.laser", [](auto& c) -> auto& { return c.lesson.laser; });
+    // The field is the one the loop's validate() uses when the map is missing.
+    s.push_back(file("laser.map", "map",
+                     "the filter's map: a built-in map (standard_arena, office) or a map YAML "
+                     "file; empty: the world's map (a different one is an outdated map)",
+                     &RunConfig::laser_map_file, built_in_map_names));
+}
+
+// [laser_scanner] and [kidnap]: the simulated laser rangefinder and the kidnapping event.
+void add_laser_simulation_settings(std::vector<Setting>& s) {
+    const auto scanner_real = [&s](const std::string& name, std::string help, auto access) {
+        s.push_back(real("laser_scanner." + name, "simulator.laser_scanner." + name,
+                         std::move(help), access));
+    };
+    s.push_back(boolean(
+        "laser_scanner.enabled", "simulator.laser_scanner.enabled",
+        "simulate the laser rangefinder (URG-04LX-like)",
+        [](auto& c) -> auto& { return c.physical.laser_scanner.enabled; }));
+    add_scanner_geometry(
+        s, "laser_scanner", "simulator.laser_scanner",
+        [](auto& c) -> auto& { return c.physical.laser_scanner; });
+    scanner_real(
+        "scan_period", "s between scans (a whole number of control periods)",
+        [](auto& c) -> auto& { return c.physical.laser_scanner.scan_period; });
+    scanner_real(
+        "sigma_near", "σ of the range noise up to noise_knee, m",
+        [](auto& c) -> auto& { return c.physical.laser_scanner.sigma_near; });
+    scanner_real(
+        "noise_knee", "range beyond which σ = sigma_relative · range, m",
+        [](auto& c) -> auto& { return c.physical.laser_scanner.noise_knee; });
+    scanner_real(
+        "sigma_relative", "σ of the range noise beyond noise_knee, as a fraction of the range",
+        [](auto& c) -> auto& { return c.physical.laser_scanner.sigma_relative; });
+    scanner_real(
+        "dropout_probability", "probability that a beam returns no measurement, 0 … 1",
+        [](auto& c) -> auto& { return c.physical.laser_scanner.dropout_probability; });
+
+    s.push_back(boolean(
+        "kidnap.enabled", "simulator.kidnap.enabled",
+        "lift the robot once and put it down elsewhere (the filter is not told)",
+        [](auto& c) -> auto& { return c.simulator.kidnap.enabled; }));
+    s.push_back(real(
+        "kidnap.time", "simulator.kidnap.time", "simulated time of the kidnapping, s",
+        [](auto& c) -> auto& { return c.simulator.kidnap.time; }));
+    s.push_back(real(
+        "kidnap.x", "simulator.kidnap.pose.x", "where the robot is put down: x, m",
+        [](auto& c) -> auto& { return c.simulator.kidnap.pose.x; }));
+    s.push_back(real(
+        "kidnap.y", "simulator.kidnap.pose.y", "where the robot is put down: y, m",
+        [](auto& c) -> auto& { return c.simulator.kidnap.pose.y; }));
+    s.push_back(degrees(
+        "kidnap.heading_deg", "simulator.kidnap.pose.theta", "heading it is put down with, °",
+        [](auto& c) -> auto& { return c.simulator.kidnap.pose.theta; }));
+}
+
 const char* routine_name(RoutineSpec::Kind kind) {
     switch (kind) {
         case RoutineSpec::Kind::Square:
@@ -312,6 +536,8 @@ const char* routine_name(RoutineSpec::Kind kind) {
             return "piecewise";
         case RoutineSpec::Kind::Random:
             return "random";
+        case RoutineSpec::Kind::Rectangle:
+            return "rectangle";
     }
     return "square";
 }
@@ -326,14 +552,16 @@ std::vector<Setting> make_settings() {
                  {},
                  {},
                  {},
+                 {},
                  {}};
     seed.get = [](const RunConfig& c) -> SettingValue { return static_cast<std::int64_t>(c.seed); };
     seed.set = [](RunConfig& c, const SettingValue& v) {
         c.seed = static_cast<std::uint64_t>(std::get<std::int64_t>(v));
     };
     s.push_back(seed);
-    Setting laps{"laps", "laps", "laps of the square path (1 … 1000)", SettingType::Integer, {}, {},
-                 {},     {}};
+    Setting laps{
+        "laps", "laps", "laps of the square path (1 … 1000)", SettingType::Integer, {}, {}, {},
+        {},     {}};
     laps.get = [](const RunConfig& c) -> SettingValue { return std::int64_t{c.laps}; };
     laps.set = [](RunConfig& c, const SettingValue& v) {
         c.laps = static_cast<int>(std::get<std::int64_t>(v));
@@ -343,19 +571,10 @@ std::vector<Setting> make_settings() {
         "duration", "duration",
         "simulated seconds for routines other than the square; 0: 200 s per lap",
         [](auto& c) -> auto& { return c.duration; }));
-    Setting world{"world",
-                  "world",
-                  "world file (relative to this file); empty: built-in arena",
-                  SettingType::Text,
-                  {},
-                  {},
-                  {},
-                  {}};
-    world.get = [](const RunConfig& c) -> SettingValue { return c.world_file; };
-    world.set = [](RunConfig& c, const SettingValue& v) {
-        c.world_file = std::get<std::string>(v);
-    };
-    s.push_back(world);
+    s.push_back(file("world", "world",
+                     "world: a built-in world (standard_arena, office) or a world file "
+                     "(relative to this file); empty: the standard arena",
+                     &RunConfig::world_file, built_in_world_names));
 
     // [filter] — the EKF's noise model (paper: Q over [ε_d, ε_Δθ], R over [ε_ds1, ε_ds2]).
     s.push_back(real(
@@ -389,7 +608,9 @@ std::vector<Setting> make_settings() {
         [](auto& c) -> auto& { return c.filter.limits.max_variance; }));
 
     add_lesson_filter_settings(s);
+    add_laser_settings(s);
     add_simulated_sensor_settings(s);
+    add_laser_simulation_settings(s);
 
     // [initial] — the belief the filter starts from.
     s.push_back(pose_part("initial.x", "initial.x", "believed start x, m (default: world start)",
@@ -410,16 +631,18 @@ std::vector<Setting> make_settings() {
         [](auto& c) -> auto& { return c.initial.var_theta; }));
 
     // [control] — the path-control routine.
-    Setting routine{
-        "control.routine",
-        "control.routine",
-        "square, line, circle, goto, manual, shuttle (line back and forth), "
-        "piecewise (corners with stops) or random (random places)",
-        SettingType::Choice,
-        {"square", "line", "circle", "goto", "manual", "shuttle", "piecewise", "random"},
-        {},
-        {},
-        {}};
+    Setting routine{"control.routine",
+                    "control.routine",
+                    "square, line, circle, goto, manual, shuttle (line back and forth), "
+                    "piecewise (corners with stops), random (random places) or rectangle (laps of "
+                    "rectangle_size from rectangle_corner)",
+                    SettingType::Choice,
+                    {"square", "line", "circle", "goto", "manual", "shuttle", "piecewise", "random",
+                     "rectangle"},
+                    {},
+                    {},
+                    {},
+                    {}};
     routine.get = [](const RunConfig& c) -> SettingValue {
         return std::string(routine_name(c.routine.kind));
     };
@@ -428,7 +651,8 @@ std::vector<Setting> make_settings() {
         for (auto kind :
              {RoutineSpec::Kind::Square, RoutineSpec::Kind::Line, RoutineSpec::Kind::Circle,
               RoutineSpec::Kind::Goto, RoutineSpec::Kind::Manual, RoutineSpec::Kind::Shuttle,
-              RoutineSpec::Kind::Piecewise, RoutineSpec::Kind::Random}) {
+              RoutineSpec::Kind::Piecewise, RoutineSpec::Kind::Random,
+              RoutineSpec::Kind::Rectangle}) {
             if (name == routine_name(kind)) {
                 c.routine.kind = kind;
             }
@@ -443,6 +667,7 @@ std::vector<Setting> make_settings() {
                           "control.random_points",
                           "random: how many random places to visit (1 … 100)",
                           SettingType::Integer,
+                          {},
                           {},
                           {},
                           {},
@@ -495,6 +720,14 @@ std::vector<Setting> make_settings() {
     s.push_back(boolean(
         "control.circle_clockwise", "controller.clockwise", "circle: true for clockwise",
         [](auto& c) -> auto& { return c.routine.circle_clockwise; }));
+    s.push_back(point(
+        "control.rectangle_corner", "controller.rectangle_corner",
+        "rectangle: lower-left corner [x, y] where each lap starts, heading +x, m",
+        [](auto& c) -> auto& { return c.routine.rectangle_corner; }));
+    s.push_back(point(
+        "control.rectangle_size", "controller.rectangle_size",
+        "rectangle: [width along x, height along y], m (driven counter-clockwise)",
+        [](auto& c) -> auto& { return c.routine.rectangle_size; }));
     s.push_back(real(
         "control.goto_x", "controller.target.x", "goto: target x, m",
         [](auto& c) -> auto& { return c.routine.goto_target.x; }));

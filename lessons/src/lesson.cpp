@@ -6,6 +6,7 @@
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup_beacons_lesson_resource.hpp"
 #include "legofeup_compass_lesson_resource.hpp"
+#include "legofeup_laser_lesson_resource.hpp"
 #include "legofeup_lesson_resource.hpp"
 #include "legofeup_speeds_lesson_resource.hpp"
 
@@ -18,11 +19,12 @@ struct EmbeddedLesson {
 };
 
 // The explicit registry: the LegoFeup lesson first, then the related papers' lessons.
-const std::array<EmbeddedLesson, 4> kEmbeddedLessons{{
+const std::array<EmbeddedLesson, 5> kEmbeddedLessons{{
     {resources::kLegoFeupLesson, "lessons/legofeup.toml"},
     {resources::kBeaconsLesson, "lessons/beacons.toml"},
     {resources::kSpeedsLesson, "lessons/speeds.toml"},
     {resources::kCompassLesson, "lessons/compass.toml"},
+    {resources::kLaserLesson, "lessons/laser.toml"},
 }};
 
 const std::vector<Lesson>& parsed_built_in_lessons() {

@@ -5,12 +5,14 @@
 
 #include "legofeup/lessons/config_schema.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/map_file.hpp"
 #include "legofeup/lessons/world_file.hpp"
 
 namespace legofeup::lessons {
 namespace {
 
 constexpr double kSecondsPerLap = 200.0;        // a lap takes ~90 s; a lost robot gets twice that
+constexpr double kStandardLapLength = 8.0;      // m: the square of side 2 m the above is for
 constexpr double kRandomWaypointSpacing = 0.5;  // m between consecutive random places
 
 // A validation issue, pointed at the setting the user wrote and where they wrote it.
@@ -52,6 +54,17 @@ Controller make_controller(const RunConfig& config, const sim::WorldSpec& world)
             }
             return VisitWaypoints(std::move(corners), routine.pause, config.laps);
         }
+        case RoutineSpec::Kind::Rectangle: {
+            // Counter-clockwise from the lower-left corner, heading +x first.
+            const Vector2 low = routine.rectangle_corner;
+            const Vector2 high = low + routine.rectangle_size;
+            const Vector2 corners[] = {low, {high.x(), low.y()}, high, {low.x(), high.y()}};
+            std::vector<PathSegment> segments;
+            for (int i = 0; i < 4; ++i) {
+                segments.emplace_back(LineSegment{corners[i], corners[(i + 1) % 4]});
+            }
+            return FollowPath(std::move(segments), config.laps);
+        }
         case RoutineSpec::Kind::Random: {
             // Inside the square path (the arena's free floor), from the run's seed.
             const Vector2 half = Vector2::Constant(0.5 * world.path_side);
@@ -65,6 +78,41 @@ Controller make_controller(const RunConfig& config, const sim::WorldSpec& world)
     return ManualDrive{};
 }
 
+/// The laser filter's map: [laser] map when given (an outdated map is a lesson), else the
+/// world's. Problems of the map file come with the configuration line that names it.
+std::shared_ptr<const OccupancyGrid> filter_map(const RunConfig& config,
+                                                const sim::WorldSpec& world) {
+    if (config.laser_map_file.empty()) {
+        return world.map;
+    }
+    try {
+        return load_map(config.laser_map_file);
+    } catch (const InputError& error) {
+        std::vector<InputProblem> problems = error.problems();
+        InputProblem named{"", 0, "laser.map", "\"" + config.laser_map_file + "\"",
+                           "the map file is unusable"};
+        if (const auto origin = config.origins.find("map"); origin != config.origins.end()) {
+            named.source = origin->second.source;
+            named.line = origin->second.line;
+        }
+        problems.push_back(named);
+        throw InputError(std::move(problems));
+    }
+}
+
+/// The filter must expect as many beams per scan as the simulated scanner measures (else
+/// it would refuse every scan). Whether there is a map at all the loop's validate() checks.
+void check_laser_beams(const RunConfig& config, ConfigChecker& check) {
+    const ScanGeometry& believed = config.lesson.laser.geometry;
+    const sim::LaserScannerSpec& scanner = config.physical.laser_scanner;
+    if (config.lesson.localisation == Localisation::Laser && scanner.enabled) {
+        check.require(believed.beam_count == scanner.geometry.beam_count,
+                      "lesson.laser.geometry.beam_count", believed.beam_count,
+                      "must equal the simulated scanner's laser_scanner.beam_count ("
+                          + std::to_string(scanner.geometry.beam_count) + ")");
+    }
+}
+
 }  // namespace
 
 ResolvedRun resolve(const RunConfig& config) {
@@ -76,7 +124,7 @@ ResolvedRun resolve(const RunConfig& config) {
         run.world = built_in_world();
     } else {
         try {
-            run.world = load_world_file(config.world_file);
+            run.world = load_world(config.world_file);
         } catch (const InputError& error) {
             std::vector<InputProblem> problems = error.problems();
             if (const auto origin = config.origins.find("world"); origin != config.origins.end()) {
@@ -86,11 +134,24 @@ ResolvedRun resolve(const RunConfig& config) {
             throw InputError(std::move(problems));
         }
     }
+    const std::shared_ptr<const OccupancyGrid> laser_map = filter_map(config, run.world);
 
     std::vector<ConfigIssue> issues;
     ConfigChecker check(issues);
     check.in_range_or_zero("duration", config.duration, 1.0, 1e6);
     check.in_range("control.random_points", config.routine.random_points, 1.0, 100.0);
+    const std::size_t issues_before_rectangle = issues.size();
+    if (config.routine.kind == RoutineSpec::Kind::Rectangle) {
+        check.require(config.routine.rectangle_corner.allFinite(), "controller.rectangle_corner",
+                      config.routine.rectangle_corner.norm(), "must be a point of finite numbers");
+        for (const double side :
+             {config.routine.rectangle_size.x(), config.routine.rectangle_size.y()}) {
+            check.require(side >= 0.1 && side <= 1000.0, "controller.rectangle_size", side,
+                          "each side must be between 0.1 and 1000 m");
+        }
+    }
+    const bool bad_rectangle = issues.size() > issues_before_rectangle;
+    check_laser_beams(config, check);
     check.in_range("robot.wheel_diameter", config.robot.wheel_diameter, 0.005, 1.0);
     check.in_range("robot.counts_per_turn", config.robot.counts_per_turn, 1.0, 1e6);
     check.in_range_or_zero("odometry.codo_right", config.robot.codo_right, 1.0, 1e6);
@@ -111,6 +172,7 @@ ResolvedRun resolve(const RunConfig& config) {
     loop.filter = config.filter;
     loop.lesson = config.lesson;
     loop.beacons = run.world.beacons;  // the filter's beacon map is the world's
+    loop.map = laser_map;
     loop.control_period = config.simulator.control_period;
     loop.initial = config.initial;
     loop.initial.pose = config.initial_pose.applied_to(run.world.start);
@@ -118,8 +180,12 @@ ResolvedRun resolve(const RunConfig& config) {
     loop.gains = config.gains;
     loop.controller = make_controller(config, run.world);
     loop.max_wheel_speed = config.max_wheel_speed;
-    const auto loop_issues = validate(loop);
-    issues.insert(issues.end(), loop_issues.begin(), loop_issues.end());
+    for (const ConfigIssue& issue : validate(loop)) {
+        // A bad rectangle is reported once, as such, not again as its degenerate segments.
+        if (!(bad_rectangle && issue.field.starts_with("controller.path"))) {
+            issues.push_back(issue);
+        }
+    }
 
     // The simulated robot: the same nominal robot with the [simulator] section's errors.
     run.robot = config.physical;
@@ -128,17 +194,15 @@ ResolvedRun resolve(const RunConfig& config) {
     run.robot.counts_per_turn = config.robot.counts_per_turn;
     run.robot.ir_mount = config.robot.ir_mount;
     run.robot.ir_curve = config.ir_curve;
-    for (auto&& more : {sim::validate(run.robot), sim::validate(config.simulator)}) {
-        for (const ConfigIssue& issue : more) {
-            // Geometry shared with the filter is reported once, under the filter's name.
-            const bool shared = issue.field.rfind("simulator.ir_mount.", 0) == 0
-                                || issue.field.rfind("simulator.ir_curve.", 0) == 0
-                                || issue.field == "simulator.wheel_diameter"
-                                || issue.field == "simulator.wheel_base"
-                                || issue.field == "simulator.counts_per_turn";
-            if (!shared) {
-                issues.push_back(issue);
-            }
+    for (const ConfigIssue& issue : sim::validate(run.robot, config.simulator)) {
+        // Geometry shared with the filter is reported once, under the filter's name.
+        const bool shared = issue.field.rfind("simulator.ir_mount.", 0) == 0
+                            || issue.field.rfind("simulator.ir_curve.", 0) == 0
+                            || issue.field == "simulator.wheel_diameter"
+                            || issue.field == "simulator.wheel_base"
+                            || issue.field == "simulator.counts_per_turn";
+        if (!shared) {
+            issues.push_back(issue);
         }
     }
     run.true_start = config.true_start.applied_to(run.world.start);
@@ -151,9 +215,15 @@ ResolvedRun resolve(const RunConfig& config) {
         throw InputError(std::move(problems));
     }
 
-    run.max_duration = config.routine.kind == RoutineSpec::Kind::Square || config.duration <= 0.0
-                           ? kSecondsPerLap * config.laps
-                           : config.duration;
+    const bool lapped = config.routine.kind == RoutineSpec::Kind::Square
+                        || config.routine.kind == RoutineSpec::Kind::Rectangle;
+    // Longer laps than the standard square get proportionally more time.
+    const double lap_scale =
+        config.routine.kind == RoutineSpec::Kind::Rectangle
+            ? std::max(1.0, 2.0 * config.routine.rectangle_size.sum() / kStandardLapLength)
+            : 1.0;
+    run.max_duration = lapped || config.duration <= 0.0 ? kSecondsPerLap * config.laps * lap_scale
+                                                        : config.duration;
     return run;
 }
 

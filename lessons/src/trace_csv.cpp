@@ -34,7 +34,7 @@ void number_if(std::ostream& out, bool present, double value) {
 
 /// The further lessons' columns (after frame_missing): what the optional sensors read, the
 /// speed estimates of paper 003, the comparison filter and the truths they are judged by.
-/// Empty cells where the lesson has no such sensor or estimate. Ends the row.
+/// Empty cells where the lesson has no such sensor or estimate.
 void further_lesson_cells(std::ostream& out, const LoopSnapshot& s, const GroundTruth& truth) {
     out << to_string(s.localisation) << ',' << to_string(s.filter_kind) << ',';
     const bool scan = !s.frame_missing && s.frame.has_beacon_scan;
@@ -75,10 +75,40 @@ void further_lesson_cells(std::ostream& out, const LoopSnapshot& s, const Ground
     number(out, truth.velocity.v);
     number(out, truth.velocity.w);
     number(out, truth.wheel_surface_speeds.right);
-    // The last cell: no comma after it. (The gyro bias and magnetic disturbance of the truth
-    // are not written: the UDP truth stream does not carry them, and a trace must not depend
-    // on the link it came over.)
-    cell(out, truth.wheel_surface_speeds.left);
+    // (The gyro bias and magnetic disturbance of the truth are not written: the UDP truth
+    // stream does not carry them, and a trace must not depend on the link it came over.)
+    number(out, truth.wheel_surface_speeds.left);
+}
+
+/// The laser lesson's columns (paper 001): whether a scan came, what the ICP match did, the
+/// mismatch count and recovery, and the observation with its innovation. Empty cells unless
+/// the localisation is laser; the match's cells empty without a scan, the observation's
+/// unless the match was used. Ends the row.
+void laser_cells(std::ostream& out, const LoopSnapshot& s) {
+    const LaserUpdate& laser = s.laser;
+    const bool active = s.localisation == Localisation::Laser && !s.frame_missing;
+    const bool scan = active && laser.scan_received;
+    const auto flag = [&out](bool present, bool value) {
+        out << (present ? (value ? "1" : "0") : "") << ',';
+    };
+    flag(active, laser.scan_received);
+    flag(scan, laser.matched);
+    out << (scan ? to_string(laser.status) : "") << ',';
+    number_if(out, scan, laser.icp.matched_points);
+    number_if(out, scan, laser.icp.iterations);
+    flag(scan, laser.icp.converged);
+    number_if(out, scan, laser.icp.rms_residual);
+    number_if(out, active, laser.consecutive_mismatches);
+    flag(active, laser.recovery_triggered);
+    const bool used = scan && laser.matched;
+    for (int i = 0; i < 3; ++i) {
+        number_if(out, used, laser.innovation(i));
+    }
+    number_if(out, used, laser.observed_pose.x);
+    number_if(out, used, laser.observed_pose.y);
+    number_if(out, used, laser.observed_pose.theta);
+    // The last cell: no comma after it.
+    cell(out, used && laser.status == StepStatus::Applied ? laser.nis : kNone);
     out << '\n';
 }
 
@@ -93,7 +123,12 @@ const char* trace_csv_header() {
            "gyro_rate,gyro_heading,compass_heading,accel_right,accel_left,"
            "wheel_kf_right,wheel_kf_left,wheel_diff_right,wheel_diff_left,v_enc,w_enc,v_kf,w_kf,"
            "v_fused,w_fused,shadow_filter,shadow_x,shadow_y,shadow_theta,shadow_pxx,shadow_pyy,"
-           "shadow_ptt,v_true,w_true,wheel_right_true,wheel_left_true";
+           "shadow_ptt,v_true,w_true,wheel_right_true,wheel_left_true,"
+           // The laser lesson (paper 001).
+           "laser_scan,laser_matched,laser_update,laser_matched_points,laser_icp_iterations,"
+           "laser_icp_converged,laser_icp_rms,laser_mismatches,laser_recovery,"
+           "laser_innovation_x,laser_innovation_y,laser_innovation_theta,"
+           "laser_observed_x,laser_observed_y,laser_observed_theta,laser_nis";
 }
 
 TraceCsvWriter::TraceCsvWriter(std::ostream& out, const LoopConfig& loop) : out_(out), loop_(loop) {
@@ -132,6 +167,7 @@ void TraceCsvWriter::on_step(const LoopSnapshot& s, const GroundTruth& truth) {
          << to_string(s.update.status) << ',' << (truth.touching_wall ? 1 : 0) << ','
          << (s.frame_missing ? 1 : 0) << ',';
     further_lesson_cells(out_, s, truth);
+    laser_cells(out_, s);
 }
 
 }  // namespace legofeup::lessons

@@ -3,21 +3,27 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <map>
 
+#include "built_in_resources.hpp"
 #include "config_reader.hpp"
 #include "legofeup/core/angles.hpp"
 #include "legofeup/lessons/input_error.hpp"
-#include "standard_arena_resource.hpp"
+#include "legofeup/lessons/map_file.hpp"
 #include "text_file.hpp"
 #include "toml_values.hpp"
 
 namespace legofeup::lessons {
 namespace {
 
+/// Loads the map a world's [map] names (as written there); throws InputError.
+using MapLoader = std::function<std::shared_ptr<const OccupancyGrid>(const std::string& file)>;
+
 class WorldReader {
   public:
-    explicit WorldReader(std::string source) : source_(std::move(source)) {}
+    WorldReader(std::string source, MapLoader load_map)
+        : source_(std::move(source)), load_map_(std::move(load_map)) {}
 
     sim::WorldSpec read(const toml::table& root) {
         sim::WorldSpec world;
@@ -40,13 +46,16 @@ class WorldReader {
                 read_beacons(node, world.beacons);
             } else if (name == "magnetic") {
                 read_magnetic(node, world.magnetic);
+            } else if (name == "map") {
+                read_map(node, world);
             } else {
                 problem(node, name,
-                        "unknown key (expected name, [start], [path], [[wall]], [[beacon]] or "
-                        "[magnetic])");
+                        "unknown key (expected name, [start], [path], [[wall]], [[beacon]], "
+                        "[magnetic] or [map])");
             }
         }
         check_beacons_inside_walls(world);
+        check_start_is_free(root, world);
         return world;
     }
 
@@ -263,16 +272,66 @@ class WorldReader {
         }
     }
 
+    // [map] file = "../maps/office.yaml": an occupancy grid whose occupied cells are solid.
+    void read_map(const toml::node& node, sim::WorldSpec& world) {
+        const auto* table = node.as_table();
+        if (table == nullptr) {
+            problem(node, "map", "must be a table with file");
+            return;
+        }
+        bool has_file = false;
+        for (const auto& [key, value] : *table) {
+            const std::string name = "map." + std::string(key.str());
+            if (key != "file") {
+                problem(value, name, "unknown key (expected file)");
+                continue;
+            }
+            has_file = true;
+            const auto* file = value.as_string();
+            if (file == nullptr || file->get().empty()) {
+                problem(value, name,
+                        "must be a quoted path to a map's YAML file, relative to this world "
+                        "file");
+                continue;
+            }
+            try {
+                world.map = load_map_(file->get());
+            } catch (const InputError& error) {
+                // The map's own problems (at their lines), then where this world names it.
+                problems_.insert(problems_.end(), error.problems().begin(), error.problems().end());
+                problem(value, name, "the map file is unusable");
+            }
+        }
+        if (!has_file) {
+            problem(node, "map", "needs file = \"<map>.yaml\"");
+        }
+    }
+
+    // The robot cannot start inside a wall or a piece of furniture of the map.
+    void check_start_is_free(const toml::table& root, const sim::WorldSpec& world) {
+        if (!world.map) {
+            return;
+        }
+        const auto cell = world.map->cell_of({world.start.x, world.start.y});
+        if (cell && world.map->occupied(*cell)) {
+            const toml::node* start = root.get("start");
+            problems_.push_back({source_, start != nullptr ? line_of(*start) : 0, "start", "",
+                                 "(" + format_config_number(world.start.x) + ", "
+                                     + format_config_number(world.start.y)
+                                     + ") is in an occupied cell of the map"});
+        }
+    }
+
     std::string source_;
+    MapLoader load_map_;
     std::vector<InputProblem> problems_;
     std::vector<const toml::node*> beacon_entries_;  // where each beacon was written
 };
 
-}  // namespace
-
-sim::WorldSpec parse_world(std::string_view text, const std::string& source) {
+sim::WorldSpec read_world(std::string_view text, const std::string& source,
+                          const MapLoader& load_map) {
     const toml::table root = parse_toml(text, source);
-    WorldReader reader(source);
+    WorldReader reader(source, load_map);
     sim::WorldSpec world = reader.read(root);
     if (!reader.problems().empty()) {
         throw InputError(reader.problems());
@@ -283,14 +342,70 @@ sim::WorldSpec parse_world(std::string_view text, const std::string& source) {
     return world;
 }
 
+/// The built-in worlds, read once: resources/worlds/<name>.toml, their maps built in too.
+const std::map<std::string, sim::WorldSpec>& built_in_worlds() {
+    static const std::map<std::string, sim::WorldSpec> worlds = [] {
+        std::map<std::string, sim::WorldSpec> all;
+        for (const std::string& name : built_in_world_names()) {
+            const std::string path = "worlds/" + name + ".toml";
+            const auto text = built_in_resource(path);
+            // A map named relative to the world, e.g. "../maps/office.yaml" → maps/office.yaml.
+            const MapLoader built_in_map = [](const std::string& file) {
+                const std::string resource =
+                    (std::filesystem::path("worlds") / file).lexically_normal().generic_string();
+                auto map = find_built_in_map(resource);
+                if (!map) {
+                    throw InputError({{"", 0, "map.file", "\"" + file + "\"",
+                                       "not among the built-in maps (resources/maps)"}});
+                }
+                return map;
+            };
+            all.emplace(name, read_world(text.value_or(""), path + " (built in)", built_in_map));
+        }
+        return all;
+    }();
+    return worlds;
+}
+
+}  // namespace
+
+sim::WorldSpec parse_world(std::string_view text, const std::string& source,
+                           const std::filesystem::path& base_directory) {
+    return read_world(text, source, [&base_directory](const std::string& file) {
+        if (const auto& names = built_in_map_names();
+            std::find(names.begin(), names.end(), file) != names.end()) {
+            return find_built_in_map(file);
+        }
+        const std::filesystem::path path(file);
+        return std::make_shared<const OccupancyGrid>(
+            load_map_file(path.is_relative() ? base_directory / path : path));
+    });
+}
+
 sim::WorldSpec load_world_file(const std::filesystem::path& path) {
-    return parse_world(read_text_file(path, "world"), path.string());
+    return parse_world(read_text_file(path, "world"), path.string(), path.parent_path());
+}
+
+const std::vector<std::string>& built_in_world_names() {
+    static const std::vector<std::string> names = {"standard_arena", "office"};
+    return names;
+}
+
+const sim::WorldSpec* find_built_in_world(std::string_view name) {
+    const auto& worlds = built_in_worlds();
+    const auto it = worlds.find(std::string(name));
+    return it == worlds.end() ? nullptr : &it->second;
 }
 
 const sim::WorldSpec& built_in_world() {
-    static const sim::WorldSpec world =
-        parse_world(resources::kStandardArenaWorld, "worlds/standard_arena.toml (built in)");
-    return world;
+    return *find_built_in_world("standard_arena");
+}
+
+sim::WorldSpec load_world(const std::string& name_or_path) {
+    if (const sim::WorldSpec* world = find_built_in_world(name_or_path)) {
+        return *world;
+    }
+    return load_world_file(name_or_path);
 }
 
 }  // namespace legofeup::lessons

@@ -10,6 +10,7 @@ namespace legofeup::sim {
 
 ExtraSensors::ExtraSensors(std::uint64_t seed, const RobotSpec& robot)
     : scanner_(seed),
+      laser_(seed),
       gyro_noise_(seed, NoiseStream::GyroNoise),
       gyro_bias_stream_(seed, NoiseStream::GyroBias),
       accel_noise_(seed, NoiseStream::AccelNoise),
@@ -85,12 +86,25 @@ void ExtraSensors::scan_beacons(const RobotSpec& robot, const BeaconMap& beacons
     }
 }
 
+void ExtraSensors::scan_laser(const RobotSpec& robot, const b2World& world, const b2Body& chassis,
+                              double time) {
+    if (robot.laser_scanner.enabled) {
+        laser_.scan(robot.laser_scanner, world, chassis, laser_scan_);
+        last_laser_time_ = time;
+    }
+}
+
 void ExtraSensors::fill(SensorFrame& frame, const RobotSpec& robot, double control_period) const {
     constexpr double kTimeTolerance = 1e-9;  // s
     frame.has_beacon_scan = robot.beacon_scanner.enabled
                             && last_scan_time_ > frame.time - control_period + kTimeTolerance;
     if (frame.has_beacon_scan) {
         frame.beacons = scan_;
+    }
+    frame.has_laser_scan = robot.laser_scanner.enabled
+                           && last_laser_time_ > frame.time - control_period + kTimeTolerance;
+    if (frame.has_laser_scan) {
+        frame.laser = laser_scan_;
     }
     frame.has_gyro = robot.gyro.enabled;
     frame.gyro_raw = robot.gyro.enabled ? gyro_raw_ : std::int16_t{0};

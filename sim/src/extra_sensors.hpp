@@ -1,6 +1,6 @@
 #pragma once
 // The further lessons' sensors on the simulated robot: beacon scanner, gyroscope, two
-// accelerometers and compass, each with its own noise streams (docs/sensors.md). The
+// accelerometers, compass and laser scanner, each with its own noise streams (docs/sensors.md). The
 // simulator calls it around every physics step and when a sample is due; it keeps the last
 // readings for the frame. Private to sim/.
 
@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "beacon_scanner.hpp"
+#include "laser_scanner.hpp"
 #include "legofeup/core/sensor_frame.hpp"
 #include "legofeup/sim/robot_spec.hpp"
 #include "legofeup/sim/world.hpp"
@@ -39,9 +40,12 @@ class ExtraSensors {
                                const b2Body& chassis, double time);
     void scan_beacons(const RobotSpec& robot, const BeaconMap& beacons_by_id, const b2World& world,
                       const b2Body& chassis, double time);
+    /// A laser scan at this instant, if the scanner is enabled.
+    void scan_laser(const RobotSpec& robot, const b2World& world, const b2Body& chassis,
+                    double time);
 
-    /// Sets the enabled sensors' readings and has_ flags; a beacon scan only when one
-    /// completed within the last control period.
+    /// Sets the enabled sensors' readings and has_ flags; a beacon scan and a laser scan
+    /// only when one completed within the last control period.
     void fill(SensorFrame& frame, const RobotSpec& robot, double control_period) const;
 
     /// The gyroscope's current bias, counts.
@@ -49,6 +53,7 @@ class ExtraSensors {
 
   private:
     BeaconScanner scanner_;
+    LaserScanner laser_;
     GaussianStream gyro_noise_;
     GaussianStream gyro_bias_stream_;
     GaussianStream accel_noise_;
@@ -62,6 +67,8 @@ class ExtraSensors {
 
     BeaconScan scan_;
     double last_scan_time_ = -1e300;
+    LaserScan laser_scan_;
+    double last_laser_time_ = -1e300;
     std::int16_t gyro_raw_ = 0;
     std::array<std::array<std::int16_t, 2>, 2> accel_raw_{};
     std::int16_t compass_raw_ = 0;

@@ -23,6 +23,8 @@ enum class NoiseStream : std::uint64_t {
     AccelNoise = 9,
     AccelBias = 10,
     CompassNoise = 11,
+    LaserRange = 12,    ///< the laser scanner's Gaussian range noise, one sample per beam
+    LaserDropout = 13,  ///< the laser scanner's dropouts, one uniform sample per beam
 };
 
 /// SplitMix64 finaliser: a well-mixed 64-bit value from any 64-bit input.

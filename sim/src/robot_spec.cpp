@@ -42,7 +42,8 @@ std::vector<ConfigIssue> validate(const RobotSpec& robot) {
                         validate(robot.beacon_scanner, "simulator.beacon_scanner"),
                         validate(robot.gyro, "simulator.gyro"),
                         validate(robot.accelerometers, "simulator.accelerometers"),
-                        validate(robot.compass, "simulator.compass")}) {
+                        validate(robot.compass, "simulator.compass"),
+                        validate(robot.laser_scanner, "simulator.laser_scanner")}) {
         issues.insert(issues.end(), more.begin(), more.end());
     }
     return issues;

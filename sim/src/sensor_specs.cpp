@@ -56,4 +56,22 @@ std::vector<ConfigIssue> validate(const CompassSpec& spec, const std::string& pr
     return issues;
 }
 
+std::vector<ConfigIssue> validate(const LaserScannerSpec& spec, const std::string& prefix) {
+    std::vector<ConfigIssue> issues = validate(spec.geometry, prefix + ".geometry");
+    ConfigChecker check(issues);
+    // Distances below 20 mm would read as error codes (kRangeFirstValid).
+    check.require(!(spec.geometry.range_min < static_cast<double>(kRangeFirstValid) / 1000.0),
+                  prefix + ".geometry.range_min", spec.geometry.range_min,
+                  "must be at least 0.02 m (shorter distances read as error codes)");
+    check.in_range(prefix + ".mount.x", spec.mount.x, -10.0, 10.0);
+    check.in_range(prefix + ".mount.y", spec.mount.y, -10.0, 10.0);
+    check.in_range(prefix + ".mount.theta", spec.mount.theta, -2.0 * kPi, 2.0 * kPi);
+    check.in_range(prefix + ".scan_period", spec.scan_period, 0.001, 10.0);
+    check.in_range(prefix + ".sigma_near", spec.sigma_near, 0.0, 1.0);
+    check.in_range(prefix + ".noise_knee", spec.noise_knee, 0.0, 100.0);
+    check.in_range(prefix + ".sigma_relative", spec.sigma_relative, 0.0, 1.0);
+    check.in_range(prefix + ".dropout_probability", spec.dropout_probability, 0.0, 1.0);
+    return issues;
+}
+
 }  // namespace legofeup::sim

@@ -10,6 +10,7 @@
 #include "box2d_convert.hpp"
 #include "drive_train.hpp"
 #include "extra_sensors.hpp"
+#include "grid_bodies.hpp"
 #include "ir_ray.hpp"
 #include "legofeup/core/angles.hpp"
 #include "noise_streams.hpp"
@@ -43,6 +44,28 @@ std::vector<ConfigIssue> validate(const SimulatorSettings& settings) {
     check.in_range("simulator.displacement.dx", event.dx, -1000.0, 1000.0);
     check.in_range("simulator.displacement.dy", event.dy, -1000.0, 1000.0);
     check.in_range("simulator.displacement.dtheta", event.dtheta, -2.0 * kPi, 2.0 * kPi);
+    const auto& kidnap = settings.kidnap;
+    check.in_range("simulator.kidnap.time", kidnap.time, 0.0, 1e7);
+    check.in_range("simulator.kidnap.pose.x", kidnap.pose.x, -1000.0, 1000.0);
+    check.in_range("simulator.kidnap.pose.y", kidnap.pose.y, -1000.0, 1000.0);
+    check.in_range("simulator.kidnap.pose.theta", kidnap.pose.theta, -2.0 * kPi, 2.0 * kPi);
+    return issues;
+}
+
+std::vector<ConfigIssue> validate(const RobotSpec& robot, const SimulatorSettings& settings) {
+    std::vector<ConfigIssue> issues = validate(robot);
+    const std::vector<ConfigIssue> more = validate(settings);
+    issues.insert(issues.end(), more.begin(), more.end());
+    // A scan completes at the end of a control period (sensors.md), so its frame carries it.
+    // Only an enabled scanner is held to it: its default period need not suit every run.
+    const double periods = robot.laser_scanner.scan_period / settings.control_period;
+    ConfigChecker check(issues);
+    check.require(!robot.laser_scanner.enabled || !std::isfinite(periods)
+                      || (std::abs(periods - std::round(periods)) <= 1e-9 * std::max(1.0, periods)
+                          && std::round(periods) >= 1.0),
+                  "simulator.laser_scanner.scan_period", robot.laser_scanner.scan_period,
+                  "must be a whole number of control periods ("
+                      + format_config_number(settings.control_period) + " s)");
     return issues;
 }
 
@@ -66,7 +89,10 @@ struct Simulator::State {
     std::array<double, 2> ir_distances{};
     double next_motion_sample_time = 0.0;  // gyroscope, accelerometers, compass
     double next_scan_time = 0.0;
+    double next_laser_time = 0.0;
     bool displaced = false;  // the displacement event has happened
+    bool kidnapped = false;  // the kidnap event has happened
+    std::uint32_t teleports = 0;
 
     GaussianStream ir_front_noise{0, NoiseStream::IrFront};
     GaussianStream ir_rear_noise{0, NoiseStream::IrRear};
@@ -86,6 +112,9 @@ struct Simulator::State {
         physics.SetContinuousPhysics(false);  // 1 mm per step against 1 cm skins: no tunnelling
         physics.SetAllowSleeping(false);
         build_walls();
+        if (world.map) {
+            build_grid_body(physics, *world.map);  // after the walls: a fixed creation order
+        }
     }
 
     double time() const { return static_cast<double>(step_count) * dt; }
@@ -196,6 +225,14 @@ struct Simulator::State {
                 next_scan_time += robot.beacon_scanner.period;
             }
         }
+        // The schedule runs whether or not the laser is on, so scans stay at whole multiples
+        // of scan_period (ends of control periods) even when it is switched on mid-run.
+        if (now + kTimeTolerance >= next_laser_time) {
+            extra.scan_laser(robot, physics, *chassis, now);
+            while (next_laser_time <= now + kTimeTolerance) {
+                next_laser_time += robot.laser_scanner.scan_period;
+            }
+        }
     }
 
     void restart(const Pose2& start, std::uint64_t seed) {
@@ -210,17 +247,27 @@ struct Simulator::State {
         next_ir_time = robot.ir_period;
         next_motion_sample_time = 0.0;
         next_scan_time = 0.0;
+        next_laser_time = 0.0;
         sample_extra_sensors();
         displaced = false;
+        kidnapped = false;
+        teleports = 0;
+    }
+
+    // The displacement and kidnap events (sensors.md) are due at the start of the first
+    // control period whose end time is ≥ their time; both are teleports. When both are due
+    // in the same period, the displacement comes first and the kidnap's absolute pose wins.
+    bool due(bool enabled, bool happened, double event_time) const {
+        return enabled && !happened
+               && time() + settings.control_period + kTimeTolerance >= event_time;
     }
 };
 
 Simulator::Simulator(WorldSpec world, RobotSpec robot, SimulatorSettings settings,
                      std::uint64_t seed) {
     auto issues = validate(world);
-    for (auto&& more : {validate(robot), validate(settings)}) {
-        issues.insert(issues.end(), more.begin(), more.end());
-    }
+    const auto more = validate(robot, settings);
+    issues.insert(issues.end(), more.begin(), more.end());
     if (!issues.empty()) {
         throw invalid_configuration("simulator", issues);
     }
@@ -240,6 +287,7 @@ void Simulator::teleport(const Pose2& pose) {
     chassis.SetTransform(to_b2(pose.x, pose.y), static_cast<float>(pose.theta));
     chassis.SetLinearVelocity(b2Vec2(0.0f, 0.0f));
     chassis.SetAngularVelocity(0.0f);
+    ++state_->teleports;
 }
 
 void Simulator::set_wheel_command(const WheelSpeeds& command) {
@@ -247,7 +295,7 @@ void Simulator::set_wheel_command(const WheelSpeeds& command) {
 }
 
 void Simulator::set_robot(const RobotSpec& robot) {
-    if (const auto issues = validate(robot); !issues.empty()) {
+    if (const auto issues = validate(robot, state_->settings); !issues.empty()) {
         throw invalid_configuration("simulator", issues);
     }
     state_->robot = robot;
@@ -260,12 +308,17 @@ void Simulator::step_physics() {
 
 void Simulator::step_control_period() {
     State& state = *state_;
-    const auto& event = state.settings.displacement;
-    if (event.enabled && !state.displaced
-        && state.time() + state.settings.control_period + kTimeTolerance >= event.time) {
+    const auto& displacement = state.settings.displacement;
+    if (state.due(displacement.enabled, state.displaced, displacement.time)) {
         const GroundTruth now = ground_truth();
-        teleport({now.pose.x + event.dx, now.pose.y + event.dy, now.pose.theta + event.dtheta});
+        teleport({now.pose.x + displacement.dx, now.pose.y + displacement.dy,
+                  now.pose.theta + displacement.dtheta});
         state.displaced = true;
+    }
+    const auto& kidnap = state.settings.kidnap;
+    if (state.due(kidnap.enabled, state.kidnapped, kidnap.time)) {
+        teleport(kidnap.pose);
+        state.kidnapped = true;
     }
     for (int i = 0; i < state_->steps_per_period; ++i) {
         state_->step();
@@ -304,6 +357,7 @@ GroundTruth Simulator::ground_truth() const {
         gyro.enabled ? degrees_to_radians(state_->extra.gyro_bias() / gyro.counts_per_dps) : 0.0;
     truth.magnetic_disturbance =
         degrees_to_radians(magnetic_disturbance_deg(state_->world.magnetic, position));
+    truth.teleports = state_->teleports;
     return truth;
 }
 

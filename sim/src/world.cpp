@@ -1,13 +1,39 @@
 #include "legofeup/sim/world.hpp"
 
 #include <cmath>
+#include <optional>
 #include <set>
 #include <string>
+
+#include "legofeup/core/angles.hpp"
 
 namespace legofeup::sim {
 namespace {
 
 constexpr double kStandardBeaconInset = 0.1;  // m from each corner of the walls' bounding box
+constexpr int kMaxMapCells = 10000;           // a side
+constexpr double kMaxMapExtent = 1000.0;      // m a side: Box2D's floats keep µm there
+
+void check_map(const OccupancyGrid& map, const Pose2& start, ConfigChecker& check) {
+    check.require(!map.empty(), "world.map", 0.0, "the map has no cells");
+    check.in_range("world.map.width", map.width(), 0.0, kMaxMapCells);
+    check.in_range("world.map.height", map.height(), 0.0, kMaxMapCells);
+    check.in_range("world.map.resolution", map.resolution(), 0.01, 10.0);
+    check.in_range("world.map.origin.x", map.origin().x, -1000.0, 1000.0);
+    check.in_range("world.map.origin.y", map.origin().y, -1000.0, 1000.0);
+    check.in_range("world.map.origin.theta", map.origin().theta, -2.0 * kPi, 2.0 * kPi);
+    check.require(!(map.width() * map.resolution() > kMaxMapExtent), "world.map.width", map.width(),
+                  "width · resolution must be at most 1000 m");
+    check.require(!(map.height() * map.resolution() > kMaxMapExtent), "world.map.height",
+                  map.height(), "height · resolution must be at most 1000 m");
+    if (map.empty()) {
+        return;
+    }
+    const std::optional<GridCell> cell = map.cell_of(position_of(start));
+    check.require(!cell || !map.occupied(*cell), "world.start.x", start.x,
+                  "the start pose (" + format_config_number(start.x) + ", "
+                      + format_config_number(start.y) + ") m lies in an occupied cell of the map");
+}
 
 }  // namespace
 
@@ -44,6 +70,9 @@ std::vector<ConfigIssue> validate(const WorldSpec& world) {
     }
     check.in_range("world.magnetic.amplitude_deg", world.magnetic.amplitude_deg, 0.0, 180.0);
     check.positive("world.magnetic.wavelength", world.magnetic.wavelength, 1e6);
+    if (world.map) {
+        check_map(*world.map, world.start, check);
+    }
     return issues;
 }
 

@@ -33,6 +33,20 @@ std::string SimServer::State::check_pose_in_arena(const Pose2& pose) const {
             high_y = std::max(high_y, point.y());
         }
     }
+    // A map's extent counts as well (a world may be a map alone, like the office).
+    if (const auto& map = simulator.world().map; map && !map->empty()) {
+        const Vector2 map_low = map->world_min();
+        const Vector2 map_high = map->world_max();
+        low_x = std::min(low_x, map_low.x());
+        low_y = std::min(low_y, map_low.y());
+        high_x = std::max(high_x, map_high.x());
+        high_y = std::max(high_y, map_high.y());
+        const auto cell = map->cell_of(position_of(pose));
+        if (cell && map->occupied(*cell)) {
+            return "pose (" + format_config_number(pose.x) + ", " + format_config_number(pose.y)
+                   + ") m is inside an occupied cell of the map";
+        }
+    }
     low_x += reach;
     low_y += reach;
     high_x -= reach;

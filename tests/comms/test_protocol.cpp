@@ -154,6 +154,19 @@ FramePacket sample_extended_frame() {
     return packet;
 }
 
+/// A frame with a gyroscope and a URG-04LX-like laser scan (682 beams, codes among them).
+FramePacket sample_laser_frame() {
+    FramePacket packet = sample_frame();
+    packet.frame.has_gyro = true;
+    packet.frame.gyro_raw = 600;
+    packet.frame.has_laser_scan = true;
+    packet.frame.laser.beam_count = 682;
+    for (std::size_t i = 0; i < 682; ++i) {
+        packet.frame.laser.range_mm[i] = static_cast<std::uint16_t>(i % 50 == 0 ? i % 3 : 500 + i);
+    }
+    return packet;
+}
+
 CommandPacket sample_command() {
     return {451, 22.45, {0.148, -0.052}};
 }
@@ -182,6 +195,7 @@ TruthPacket sample_truth() {
     packet.truth.wheel_surface_speeds = {0.148, 0.052};
     packet.truth.touching_wall = true;
     packet.truth.ir_distances = {0.15, 0.8};
+    packet.truth.teleports = 3;
     return packet;
 }
 
@@ -261,6 +275,7 @@ std::vector<Sample> valid_samples() {
     std::vector<Sample> samples{
         {PacketType::SensorFrame, encode(sample_frame())},
         {PacketType::SensorFrame, encode(sample_extended_frame())},
+        {PacketType::SensorFrame, encode(sample_laser_frame())},
         {PacketType::WheelCommand, encode(sample_command())},
         {PacketType::ConnectReply, encode(sample_connect_reply())},
         {PacketType::GroundTruth, encode(sample_truth())},
@@ -371,6 +386,7 @@ void expect_equal(const TruthPacket& actual, const TruthPacket& expected) {
     expect_same(a.ir_distances[0], e.ir_distances[0], "ir front");
     expect_same(a.ir_distances[1], e.ir_distances[1], "ir rear");
     EXPECT_EQ(a.touching_wall, e.touching_wall);
+    EXPECT_EQ(a.teleports, e.teleports);
 }
 
 void expect_equal(const NoiseSettings& actual, const NoiseSettings& expected) {
@@ -784,6 +800,7 @@ TEST(ProtocolLayout, GroundTruth) {
     packet.truth.wheel_surface_speeds = {0.148, 0.052};
     packet.truth.ir_distances = {0.3, -2.75};
     packet.truth.touching_wall = true;
+    packet.truth.teleports = 0x01020304;
 
     Bytes expected(100, 0);
     put_bytes(expected, 0, {0x4C, 0x46, 0x55, 0x50, 0x01, 0x11, 0x64, 0x00,  // 100 bytes
@@ -799,6 +816,7 @@ TEST(ProtocolLayout, GroundTruth) {
     put_bytes(expected, 76, {0x33, 0x33, 0x33, 0x33, 0x33, 0x33, 0xD3, 0x3F});  // front 0.3
     put_bytes(expected, 84, {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x06, 0xC0});  // rear −2.75
     put_bytes(expected, 92, {0x01});                                            // touching
+    put_bytes(expected, 96, {0x04, 0x03, 0x02, 0x01});  // teleports 0x01020304, u32 LE
     expect_bytes(encode(packet), expected);
 
     TruthPacket decoded;
@@ -1004,9 +1022,15 @@ TEST(ProtocolMalformed, UnknownTypes) {
 TEST(ProtocolMalformed, LengthFieldNotTheTypesSize) {
     for (const Sample& sample : valid_samples()) {
         const auto size = static_cast<std::uint16_t>(sample.bytes.size());
-        for (const std::uint16_t length :
-             {std::uint16_t{0}, std::uint16_t{20}, static_cast<std::uint16_t>(size - 1),
-              static_cast<std::uint16_t>(size + 1), std::uint16_t{512}, std::uint16_t{0xFFFF}}) {
+        std::vector<std::uint16_t> lengths{
+            0,   20,    static_cast<std::uint16_t>(size - 1), static_cast<std::uint16_t>(size + 1),
+            512, 0xFFFF};
+        if (sample.type == PacketType::SensorFrame) {
+            // A frame may be 36 or 52 + 9n + 2m long (n ≤ 8 sightings, m ≤ 1024 laser beams):
+            // its neighbours are mostly valid too, so take lengths that no frame has.
+            lengths = {0, 20, 35, 37, 51, 53, 59, 2165, 2173, 0xFFFF};
+        }
+        for (const std::uint16_t length : lengths) {
             if (length == size) {
                 continue;  // 20 is the right size of the header-only packets
             }
@@ -1057,8 +1081,8 @@ TEST(ProtocolMalformed, LongerThanTheLengthFieldOrTheMaximumIsOversized) {
         EXPECT_EQ(decoder_for(sample.type).decode(beyond), DecodeError::Oversized)
             << to_string(sample.type);
     }
-    // Beyond 512 bytes nothing else is looked at (docs' order: oversized first); at 512
-    // the content is checked.
+    // Beyond kMaxPacketSize (2172) bytes nothing else is looked at (docs' order: oversized
+    // first); at 2172 the content is checked.
     for (const Decoder& decoder : decoders()) {
         EXPECT_EQ(decoder.decode(Bytes(kMaxPacketSize + 1, 0xAB)), DecodeError::Oversized)
             << decoder.name;
@@ -1327,7 +1351,7 @@ TEST(ProtocolReserved, ConnectReplyReservedByteAndUnknownResult) {
 TEST(ProtocolReserved, GroundTruthReservedBytesAndTouchingByte) {
     const TruthPacket packet = sample_truth();
     Bytes bytes = encode(packet);
-    put_bytes(bytes, 93, {1, 2, 3, 4, 5, 6, 0xFF});
+    put_bytes(bytes, 93, {1, 2, 0xFF});  // 93–95; 96–99 are the teleport count
     TruthPacket decoded;
     ASSERT_EQ(decode(bytes, decoded), DecodeError::None);
     expect_equal(decoded, packet);

@@ -1,6 +1,7 @@
 // The sensor frame's optional extension block (docs/protocol.md, "SensorFrame extension"):
-// the layout worked out by hand, round trips of every field at its extremes, the plain
-// 36-byte frame unchanged, and every malformed extension rejected with its error and reason.
+// the layout worked out by hand, round trips of every field at its extremes (the laser scan
+// included), the plain 36-byte frame unchanged, and every malformed extension rejected with
+// its error and reason.
 
 #include <gtest/gtest.h>
 
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -48,6 +50,8 @@ void expect_same_frame(const SensorFrame& actual, const SensorFrame& expected) {
     EXPECT_EQ(actual.has_compass, expected.has_compass);
     EXPECT_EQ(actual.compass_deg, expected.compass_deg);
     EXPECT_EQ(actual.has_beacon_scan, expected.has_beacon_scan);
+    EXPECT_EQ(actual.has_laser_scan, expected.has_laser_scan);
+    EXPECT_EQ(actual.laser, expected.laser);  // beam count and all kMaxScanBeams entries
     ASSERT_EQ(actual.beacons.count, expected.beacons.count);
     for (std::size_t k = 0; k < kMaxBeaconSightings; ++k) {
         EXPECT_EQ(actual.beacons.sightings[k].id, expected.beacons.sightings[k].id) << k;
@@ -93,6 +97,18 @@ SensorFrame full_frame() {
     return frame;
 }
 
+/// A scan of `beams` beams whose ranges run through every kind of value: the error codes,
+/// other values below 20, the shortest distance, everyday ones and the largest u16.
+LaserScan laser_scan(std::uint16_t beams) {
+    LaserScan scan;
+    scan.beam_count = beams;
+    for (std::size_t i = 0; i < beams; ++i) {
+        scan.range_mm[i] = static_cast<std::uint16_t>(i < 22 ? i : 20 + 97 * i);
+    }
+    scan.range_mm[beams - 1] = 0xFFFF;
+    return scan;
+}
+
 FramePacket decoded_or_fail(const Bytes& bytes) {
     FramePacket packet;
     std::string reason;
@@ -111,12 +127,27 @@ TEST(ProtocolFrameExtension, SizesFollowTheBeaconCount) {
     EXPECT_EQ(frame_size(frame), 52U + 27U);
     frame.beacons.count = 200;  // more than a frame can hold: only the first eight travel
     EXPECT_EQ(frame_size(frame), 124U);
-    EXPECT_LE(frame_size(frame), kMaxPacketSize);
+    frame.has_laser_scan = true;
+    frame.laser.beam_count = 682;
+    EXPECT_EQ(frame_size(frame), 124U + 1364U);
+    frame.laser.beam_count = 5000;  // more than a scan holds: only the first 1024 travel
+    EXPECT_EQ(frame_size(frame), 124U + 2048U);
+    EXPECT_EQ(frame_size(frame), kMaxPacketSize);
+    EXPECT_EQ(kMaxPacketSize, 2172U);
+    frame.has_beacon_scan = false;  // the beacon count no longer counts
+    frame.laser.beam_count = 682;
+    EXPECT_EQ(frame_size(frame), 52U + 1364U);
 
-    for (std::size_t length = 0; length <= kMaxPacketSize; ++length) {
-        const bool expected =
-            length == 36 || (length >= 52 && length <= 124 && (length - 52) % 9 == 0);
-        EXPECT_EQ(is_valid_length(PacketType::SensorFrame, length), expected) << length;
+    // Every 52 + 9n + 2m, listed the long way.
+    std::set<std::size_t> valid{36};
+    for (std::size_t n = 0; n <= 8; ++n) {
+        for (std::size_t m = 0; m <= 1024; ++m) {
+            valid.insert(52 + 9 * n + 2 * m);
+        }
+    }
+    for (std::size_t length = 0; length <= kMaxPacketSize + 10; ++length) {
+        EXPECT_EQ(is_valid_length(PacketType::SensorFrame, length), valid.count(length) == 1)
+            << length;
         EXPECT_EQ(is_valid_length(PacketType::WheelCommand, length), length == 36) << length;
     }
 }
@@ -131,6 +162,8 @@ TEST(ProtocolFrameExtension, AFrameWithoutExtrasIsThePlainThirtySixBytes) {
     with_junk.frame.compass_deg = 90;
     with_junk.frame.beacons.count = 2;
     with_junk.frame.beacons.sightings[0] = {4, 1.0};
+    with_junk.frame.laser.beam_count = 682;
+    with_junk.frame.laser.range_mm[0] = 1234;
     const Bytes bytes = encode(with_junk);
     ASSERT_EQ(bytes.size(), 36U);
     EXPECT_EQ(bytes, encode(bare));
@@ -139,7 +172,36 @@ TEST(ProtocolFrameExtension, AFrameWithoutExtrasIsThePlainThirtySixBytes) {
     const FramePacket decoded = decoded_or_fail(bytes);
     expect_same_frame(decoded.frame, bare.frame);
     EXPECT_FALSE(decoded.frame.has_gyro || decoded.frame.has_accelerometers
-                 || decoded.frame.has_compass || decoded.frame.has_beacon_scan);
+                 || decoded.frame.has_compass || decoded.frame.has_beacon_scan
+                 || decoded.frame.has_laser_scan);
+}
+
+TEST(ProtocolFrameExtension, AFrameWithoutALaserScanIsByteIdenticalToBefore) {
+    // The documented extended example (written before the laser existed), with a stale scan
+    // in the frame that does not travel: the same 70 bytes, offset 50 still 0.
+    FramePacket packet;
+    packet.frame.time = 22.45;
+    packet.frame.sequence = 452;
+    packet.frame.encoder_counts = {5417, 5199};
+    packet.frame.ir_adc = {177, 31};
+    packet.frame.ir_valid = {true, true};
+    packet.frame.has_gyro = true;
+    packet.frame.gyro_raw = 597;
+    packet.frame.has_compass = true;
+    packet.frame.compass_deg = 271;
+    packet.frame.has_beacon_scan = true;
+    packet.frame.beacons.count = 2;
+    packet.frame.beacons.sightings[0] = {1, 0.75};
+    packet.frame.beacons.sightings[1] = {4, -2.5};
+    packet.frame.laser.beam_count = 3;
+    packet.frame.laser.range_mm = {100, 200, 300};
+    const Bytes bytes = encode(packet);
+    ASSERT_EQ(bytes.size(), 70U);
+    EXPECT_EQ(bytes[36], 0x0D);
+    EXPECT_EQ(bytes[50], 0);
+    EXPECT_EQ(bytes[51], 0);
+    EXPECT_FALSE(decoded_or_fail(bytes).frame.has_laser_scan);
+    EXPECT_EQ(decoded_or_fail(bytes).frame.laser, LaserScan{});
 }
 
 TEST(ProtocolFrameExtension, LayoutWorkedOutByHand) {
@@ -224,33 +286,39 @@ TEST(ProtocolFrameExtension, EveryFieldRoundTripsAtItsExtremes) {
 
 TEST(ProtocolFrameExtension, EachSensorAloneRoundTripsAndLeavesTheOthersZero) {
     const SensorFrame full = full_frame();
-    for (int which = 0; which < 4; ++which) {
+    const LaserScan scan = laser_scan(682);
+    for (int which = 0; which < 5; ++which) {
         SensorFrame frame = plain_frame();
         frame.has_gyro = which == 0;
         frame.has_accelerometers = which == 1;
         frame.has_compass = which == 2;
         frame.has_beacon_scan = which == 3;
+        frame.has_laser_scan = which == 4;
         frame.gyro_raw = full.gyro_raw;
         frame.accel_raw = full.accel_raw;
         frame.compass_deg = full.compass_deg;
         frame.beacons = full.beacons;
+        frame.laser = scan;
         const Bytes bytes = encode(FramePacket{frame, {}});
         EXPECT_EQ(bytes[36], 1U << which) << which;
-        EXPECT_EQ(bytes.size(), which == 3 ? 124U : 52U) << which;
+        EXPECT_EQ(bytes.size(), which == 3 ? 124U : (which == 4 ? 52U + 1364U : 52U)) << which;
 
         SensorFrame expected = plain_frame();  // absent sensors come back as zeros
         expected.has_gyro = frame.has_gyro;
         expected.has_accelerometers = frame.has_accelerometers;
         expected.has_compass = frame.has_compass;
         expected.has_beacon_scan = frame.has_beacon_scan;
+        expected.has_laser_scan = frame.has_laser_scan;
         if (which == 0) {
             expected.gyro_raw = full.gyro_raw;
         } else if (which == 1) {
             expected.accel_raw = full.accel_raw;
         } else if (which == 2) {
             expected.compass_deg = full.compass_deg;
-        } else {
+        } else if (which == 3) {
             expected.beacons = full.beacons;
+        } else {
+            expected.laser = scan;
         }
         expect_same_frame(decoded_or_fail(bytes).frame, expected);
     }
@@ -355,14 +423,18 @@ TEST(ProtocolFrameExtension, ANonFiniteBearingIsRejectedWithItsSighting) {
 }
 
 TEST(ProtocolFrameExtension, LengthsBetweenTheValidOnesAreRejected) {
-    for (const std::size_t length : {37U, 40U, 51U, 53U, 60U, 62U, 123U, 125U, 133U}) {
+    // 52 + 9n + 2m misses 53, 55, 57 and 59 (odd needs n ≥ 1), odd lengths beyond
+    // 52 + 63 + 2048 = 2163 and even ones beyond 2172; 2173 and more are beyond the maximum.
+    for (const std::size_t length :
+         {37U, 40U, 51U, 53U, 55U, 57U, 59U, 2165U, 2171U, 2173U, 2174U, 4000U, 65535U}) {
         Bytes bytes = full_bytes();
-        bytes.resize(length, 0);
+        bytes.resize(std::min<std::size_t>(length, kMaxPacketSize), 0);
         put_le(bytes, 6, length, 2);
         const Rejection r = rejected(bytes);
         EXPECT_EQ(r.error, DecodeError::BadLength) << length;
         EXPECT_EQ(r.reason, "bad length: sensor frame length " + std::to_string(length)
-                                + " is neither 36 nor 52 + 9n (n = 0 … 8 beacon sightings)")
+                                + " is neither 36 nor 52 + 9n + 2m (n = 0 … 8 beacon sightings, "
+                                  "m = 0 … 1024 laser beams)")
             << length;
     }
 }
@@ -383,20 +455,157 @@ TEST(ProtocolFrameExtension, AnExtensionWithoutAnySensorIsRejected) {
     frame.has_compass = true;
     Bytes bytes = encode(FramePacket{frame, {}});
     ASSERT_EQ(bytes.size(), 52U);
-    for (const int extras : {0x00, 0x10, 0xF0}) {
+    for (const int extras : {0x00, 0x20, 0xE0}) {
         bytes[36] = static_cast<std::uint8_t>(extras);
         const Rejection r = rejected(bytes);
         EXPECT_EQ(r.error, DecodeError::BadLength) << extras;
         EXPECT_EQ(r.reason,
-                  "extension block without any sensor flag (bits 0-3 of offset 36 all clear)");
+                  "extension block without any sensor flag (bits 0-4 of offset 36 all clear)");
     }
 }
 
 TEST(ProtocolFrameExtension, ReservedExtrasBitsAreIgnored) {
     Bytes bytes = full_bytes();
-    bytes[36] = 0xFF;
-    put_i16(bytes, 50, 0x1234);  // the reserved u16 too
+    bytes[36] = 0xEF;  // bits 5–7 besides the four sensors (bit 4, the laser, stays clear)
     expect_same_frame(decoded_or_fail(bytes).frame, full_frame());
+}
+
+// --- The laser scan ------------------------------------------------------------------------
+
+TEST(ProtocolFrameExtension, LaserLayoutWorkedOutByHand) {
+    SensorFrame frame = plain_frame();
+    frame.has_compass = true;
+    frame.compass_deg = 90;
+    frame.has_beacon_scan = true;
+    frame.beacons.count = 1;
+    frame.beacons.sightings[0] = {7, 1.5};
+    frame.has_laser_scan = true;
+    frame.laser.beam_count = 3;
+    frame.laser.range_mm = {kRangeNoEcho, 1234, 0xFFFF};
+
+    Bytes expected = encode(FramePacket{plain_frame(), {}});
+    expected.resize(52 + 9 + 2 * 3, 0);
+    put_le(expected, 6, 67, 2);  // length 52 + 9·1 + 2·3
+    expected[36] = 0x1C;         // compass | beacon scan | laser scan
+    expected[37] = 1;            // beacon count
+    put_i16(expected, 48, 90);   // compass
+    put_le(expected, 50, 3, 2);  // laser beam count
+    expected[52] = 7;
+    put_f64(expected, 53, 1.5);
+    const std::vector<std::uint8_t> ranges{0x00, 0x00, 0xD2, 0x04, 0xFF, 0xFF};  // 0, 1234, 65535
+    std::copy(ranges.begin(), ranges.end(), expected.begin() + 61);
+
+    EXPECT_EQ(encode(FramePacket{frame, {}}), expected);
+    expect_same_frame(decoded_or_fail(expected).frame, frame);
+}
+
+TEST(ProtocolFrameExtension, TheDocumentedLaserExampleIsWhatTheEncoderWrites) {
+    // docs/protocol.md, "Example datagrams": the first 64 bytes of a frame with a URG-04LX
+    // scan (682 beams) and nothing else optional.
+    const Bytes documented_start{0x4c, 0x46, 0x55, 0x50, 0x01, 0x01, 0x88, 0x05, 0xc4, 0x01, 0x00,
+                                 0x00, 0x50, 0x8f, 0x56, 0x01, 0x00, 0x00, 0x00, 0x00, 0x29, 0x15,
+                                 0x00, 0x00, 0x4f, 0x14, 0x00, 0x00, 0xb1, 0x00, 0x1f, 0x00, 0x03,
+                                 0x00, 0x00, 0x00, 0x10, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+                                 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xaa, 0x02, 0xd2, 0x04, 0xd3,
+                                 0x04, 0x00, 0x00, 0x01, 0x00, 0x02, 0x00, 0x35, 0x02};
+    FramePacket packet;
+    packet.frame.time = 22.45;
+    packet.frame.sequence = 452;
+    packet.frame.encoder_counts = {5417, 5199};
+    packet.frame.ir_adc = {177, 31};
+    packet.frame.ir_valid = {true, true};
+    packet.frame.has_laser_scan = true;
+    packet.frame.laser.beam_count = 682;
+    packet.frame.laser.range_mm.fill(2000);
+    const std::array<std::uint16_t, 6> first{1234,          1235,          kRangeNoEcho,
+                                             kRangeTooNear, kRangeDropout, 565};
+    std::copy(first.begin(), first.end(), packet.frame.laser.range_mm.begin());
+    std::fill(packet.frame.laser.range_mm.begin() + 682, packet.frame.laser.range_mm.end(), 0);
+    const Bytes bytes = encode(packet);
+    ASSERT_EQ(bytes.size(), 1416U);  // 52 + 2·682: one Ethernet frame (≤ 1472 bytes of UDP)
+    EXPECT_EQ(Bytes(bytes.begin(), bytes.begin() + 64), documented_start);
+    expect_same_frame(decoded_or_fail(bytes).frame, packet.frame);
+}
+
+TEST(ProtocolFrameExtension, TheLongestFrameRoundTrips) {
+    SensorFrame frame = full_frame();
+    frame.has_laser_scan = true;
+    frame.laser = laser_scan(kMaxScanBeams);
+    const Bytes bytes = encode(FramePacket{frame, {true, false, true}});
+    ASSERT_EQ(bytes.size(), kMaxPacketSize);
+    EXPECT_EQ(bytes[36], 0x1F);
+    const FramePacket decoded = decoded_or_fail(bytes);
+    expect_same_frame(decoded.frame, frame);
+    EXPECT_TRUE(decoded.flags.watchdog_stopped);
+    EXPECT_TRUE(decoded.flags.reset);
+
+    SensorFrame beyond = frame;  // a beam count beyond the array: the first 1024 travel
+    beyond.laser.beam_count = 2000;
+    EXPECT_EQ(encode(FramePacket{beyond, {}}), encode(FramePacket{frame, {}}));
+}
+
+TEST(ProtocolFrameExtension, AnEmptyLaserScanIsNotTheSameAsNoScanner) {
+    SensorFrame frame = plain_frame();
+    frame.has_laser_scan = true;  // scanned, zero beams
+    const Bytes bytes = encode(FramePacket{frame, {}});
+    ASSERT_EQ(bytes.size(), 52U);
+    EXPECT_EQ(bytes[36], 0x10);
+    const FramePacket decoded = decoded_or_fail(bytes);
+    EXPECT_TRUE(decoded.frame.has_laser_scan);
+    EXPECT_EQ(decoded.frame.laser.beam_count, 0);
+}
+
+Bytes laser_bytes(std::uint16_t beams, int sightings) {
+    SensorFrame frame = full_frame();
+    frame.beacons.count = static_cast<std::uint8_t>(sightings);
+    frame.has_laser_scan = true;
+    frame.laser = laser_scan(beams);
+    return encode(FramePacket{frame, {}});
+}
+
+TEST(ProtocolFrameExtension, ALaserBeamCountBeyond1024IsRejected) {
+    Bytes bytes = laser_bytes(1024, 0);
+    ASSERT_EQ(bytes.size(), 52U + 2048U);
+    put_le(bytes, 50, 1025, 2);
+    Rejection r = rejected(bytes);
+    EXPECT_EQ(r.error, DecodeError::BadLength);
+    EXPECT_EQ(r.reason, "laser beam count 1025 exceeds 1024");
+    put_le(bytes, 50, 65535, 2);
+    EXPECT_EQ(rejected(bytes).reason, "laser beam count 65535 exceeds 1024");
+}
+
+TEST(ProtocolFrameExtension, ALaserBeamCountThatDisagreesWithTheLengthIsRejected) {
+    Bytes bytes = laser_bytes(682, 2);
+    ASSERT_EQ(bytes.size(), 52U + 18U + 1364U);
+    put_le(bytes, 50, 681, 2);
+    Rejection r = rejected(bytes);
+    EXPECT_EQ(r.error, DecodeError::BadLength);
+    EXPECT_EQ(r.reason,
+              "beacon count 2 and laser beam count 681 need length 1432, the length field says "
+              "1434");
+    put_le(bytes, 50, 682, 2);
+    bytes[37] = 4;  // 18 bytes more would be sightings: the ranges would have to be 9 fewer
+    EXPECT_EQ(rejected(bytes).reason,
+              "beacon count 4 and laser beam count 682 need length 1452, the length field says "
+              "1434");
+}
+
+TEST(ProtocolFrameExtension, LaserRangesWithoutTheLaserFlagAreRejected) {
+    Bytes bytes = laser_bytes(10, 8);
+    bytes[36] = 0x0F;  // laser bit cleared, beam count still 10
+    const Rejection r = rejected(bytes);
+    EXPECT_EQ(r.error, DecodeError::BadLength);
+    EXPECT_EQ(r.reason, "laser beam count 10 without the laser-scan flag (bit 4)");
+}
+
+TEST(ProtocolFrameExtension, ALaserScanCutShortIsTruncated) {
+    const Bytes bytes = laser_bytes(682, 8);
+    for (const std::size_t size :
+         {std::size_t{124}, std::size_t{125}, std::size_t{1000}, bytes.size() - 1}) {
+        const Bytes cut(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(size));
+        const Rejection r = rejected(cut);
+        EXPECT_EQ(r.error, DecodeError::Truncated) << size;
+    }
 }
 
 }  // namespace

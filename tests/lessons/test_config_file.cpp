@@ -95,7 +95,7 @@ zoom = 2
     EXPECT_EQ(problems[1], "bad.toml:4: filter.r11 = \"small\": must be a number");
     EXPECT_EQ(problems[2],
               "bad.toml:6: control.routine = \"spiral\": must be one of: square, line, circle, "
-              "goto, manual, shuttle, piecewise, random");
+              "goto, manual, shuttle, piecewise, random, rectangle");
     EXPECT_EQ(problems[3].rfind("bad.toml:7: [camera]: unknown section", 0), 0u) << problems[3];
     // Nothing was applied: the configuration is as it was.
     EXPECT_EQ(config.seed, before.seed);

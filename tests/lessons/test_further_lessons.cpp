@@ -1,4 +1,5 @@
-// The built-in lessons of the related papers (beacons, speeds, compass): each is registered,
+// The built-in lessons of the related papers (beacons, speeds, compass; laser in
+// test_laser_lesson.cpp): each is registered,
 // reachable as "<lesson>:<step>" experiments, and each step's checks pass for its own preset
 // and fail on the run of the step they must tell it from (the papers' findings, reproduced).
 #include <gtest/gtest.h>
@@ -22,11 +23,12 @@ const LessonStep& step(const char* lesson, const char* id) {
 
 TEST(FurtherLessons, AreRegisteredInOrderAndReachableAsExperiments) {
     const std::vector<BuiltInLesson>& list = built_in_lessons();
-    ASSERT_EQ(list.size(), 4U);
+    ASSERT_EQ(list.size(), 5U);
     EXPECT_EQ(list[0].id, "legofeup");
     EXPECT_EQ(list[1].id, "beacons");
     EXPECT_EQ(list[2].id, "speeds");
     EXPECT_EQ(list[3].id, "compass");
+    EXPECT_EQ(list[4].id, "laser");
     const Experiment* experiment = find_experiment("beacons:b");
     ASSERT_NE(experiment, nullptr);
     EXPECT_EQ(experiment->config.lesson.localisation, Localisation::Beacons);

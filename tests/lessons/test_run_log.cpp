@@ -166,10 +166,10 @@ TEST(RunLog, RoundTripHoldsTheHeaderAndEveryFrameCommandAndTruth) {
     const ResolvedRun run = experiment_f();
     const RecordedRun recorded = record_lockstep(run, "lap.log");
     const std::string text = read_text(recorded.path);
-    EXPECT_EQ(text.rfind("legofeup-run-log 2\n", 0), 0U);
+    EXPECT_EQ(text.rfind("legofeup-run-log 3\n", 0), 0U);
 
     const RunLog log = load_run_log(recorded.path);
-    EXPECT_EQ(log.header.version, 2);
+    EXPECT_EQ(log.header.version, 3);
     EXPECT_EQ(log.header.program, "test-program 1.2.3");
     EXPECT_EQ(log.header.title, "experiment f, test");
     EXPECT_EQ(log.header.seed, 5U);
@@ -413,7 +413,7 @@ TEST(RunLog, AMalformedLineIsReportedAtFileLineWithTheColumn) {
     // Too few cells.
     write_text(path, with_line(text, bad, "1,2,3"));
     EXPECT_NE(message_of(path).find(path.string() + ":" + std::to_string(bad)
-                                    + ": a record has 31 cells"),
+                                    + ": a record has 32 cells"),
               std::string::npos);
 
     // A bad setting in the configuration block is reported at its line in the log.
@@ -435,10 +435,10 @@ TEST(RunLog, AnUnknownFormatOrNewerVersionIsRefusedByName) {
     const RecordedRun& recorded = short_recording();
     const std::string text = read_text(recorded.path);
     const fs::path path = temp_file("future.log");
-    write_text(path, with_line(text, 1, "legofeup-run-log 3"));
+    write_text(path, with_line(text, 1, "legofeup-run-log 4"));
     EXPECT_EQ(message_of(path), path.string()
-                                    + ":1: version = 3: run log format version 3 is newer than "
-                                      "this program reads (up to 2): update LegoFeup Lab");
+                                    + ":1: version = 4: run log format version 4 is newer than "
+                                      "this program reads (up to 3): update LegoFeup Lab");
     write_text(path, "t,x_true,y_true\n1,2,3\n");
     EXPECT_NE(message_of(path).find(":1: not a LegoFeup run log"), std::string::npos);
     write_text(path, text.substr(0, text.find("config: ")));

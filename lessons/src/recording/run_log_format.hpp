@@ -2,7 +2,8 @@
 // The run log's text format, shared by its writer and its reader (docs/recording.md).
 // Private to lessons/.
 //
-//   legofeup-run-log 2                  format and version (1: no optional-sensor columns)
+//   legofeup-run-log 3                  format and version (1: no optional-sensor columns,
+//                                       2: no laser scan column)
 //   program: legofeup-cli 0.4.0         header lines "key: value", in this order
 //   title: experiment f: …
 //   seed: 42
@@ -20,6 +21,11 @@
 // the four accelerometer axes and compass as raw integers, and the beacon scan as one cell
 // "<count>;<id>:<bearing>;…" (e.g. "2;3:-3.141592653589793;200:1.5", "0" for a scan that saw
 // nothing). Version 1 logs (their 24 columns) still read, as frames without those sensors.
+//
+// Version 3 appends the laser scan (paper 001) as one cell "<beam count>;<r0>;<r1>;…" with
+// each range in whole millimetres or its error code, exactly as in LaserScan ("0" for a scan
+// of no beams); empty when the frame carried no scan. Version 2 logs (31 columns) read as
+// frames without scans.
 
 #include <charconv>
 #include <optional>
@@ -44,20 +50,39 @@ inline constexpr std::string_view kColumnListV1 =
     "ir_valid_front,ir_valid_rear,v1,v2,truth_x,truth_y,truth_theta,x,y,theta,"
     "p_xx,p_xy,p_xtheta,p_yy,p_ytheta,p_thetatheta";
 inline constexpr int kColumnCountV1 = 24;
-/// Record columns of the version written (2): version 1's, then the optional sensors'.
-inline constexpr std::string_view kColumnList =
+/// Record columns of version 2: version 1's, then the optional sensors'.
+inline constexpr std::string_view kColumnListV2 =
     "step,time,sequence,frame_missing,encoder_right,encoder_left,ir_adc_front,ir_adc_rear,"
     "ir_valid_front,ir_valid_rear,v1,v2,truth_x,truth_y,truth_theta,x,y,theta,"
     "p_xx,p_xy,p_xtheta,p_yy,p_ytheta,p_thetatheta,"
     "gyro_raw,accel_right_forward,accel_right_left,accel_left_forward,accel_left_left,"
     "compass_deg,beacons";
-inline constexpr int kColumnCount = 31;
-static_assert(kColumnList.starts_with(kColumnListV1));
+inline constexpr int kColumnCountV2 = 31;
+/// Record columns of the version written (3): version 2's, then the laser scan.
+inline constexpr std::string_view kColumnList =
+    "step,time,sequence,frame_missing,encoder_right,encoder_left,ir_adc_front,ir_adc_rear,"
+    "ir_valid_front,ir_valid_rear,v1,v2,truth_x,truth_y,truth_theta,x,y,theta,"
+    "p_xx,p_xy,p_xtheta,p_yy,p_ytheta,p_thetatheta,"
+    "gyro_raw,accel_right_forward,accel_right_left,accel_left_forward,accel_left_left,"
+    "compass_deg,beacons,laser_scan";
+inline constexpr int kColumnCount = 32;
+static_assert(kColumnListV2.starts_with(kColumnListV1));
+static_assert(kColumnList.starts_with(kColumnListV2));
+
+/// The record columns of a version (1 … kRunLogVersion) and their count.
+inline std::string_view column_list(int version) {
+    return version == 1 ? kColumnListV1 : version == 2 ? kColumnListV2 : kColumnList;
+}
+inline int column_count(int version) {
+    return version == 1 ? kColumnCountV1 : version == 2 ? kColumnCountV2 : kColumnCount;
+}
 
 /// Separators inside the beacons cell: between the count and each sighting, and between a
 /// sighting's id and bearing.
 inline constexpr char kSightingSeparator = ';';
 inline constexpr char kIdBearingSeparator = ':';
+/// Separator inside the laser scan cell: between the beam count and each range.
+inline constexpr char kRangeSeparator = ';';
 
 /// `x` shortest-round-trip; "nan", "inf", "-inf" for the non-finite.
 inline std::string number(double x) {

@@ -213,8 +213,11 @@ enum Column : int {
     kAccelRightForward,  // then right left, left forward, left left
     kCompass = kAccelRightForward + 4,
     kBeacons,
+    // Version 3: the laser scan.
+    kLaserScan,
 };
-static_assert(kBeacons + 1 == format::kColumnCount);
+static_assert(kBeacons + 1 == format::kColumnCountV2);
+static_assert(kLaserScan + 1 == format::kColumnCount);
 
 /// The beacons cell: "<count>" then ";<id>:<bearing>" per sighting.
 BeaconScan parse_beacons(const CellReader& c) {
@@ -253,10 +256,45 @@ BeaconScan parse_beacons(const CellReader& c) {
     return scan;
 }
 
-/// Version 2's optional-sensor cells into `frame`; all empty in a record without a frame.
-void parse_optional_sensors(const CellReader& c, bool frame_missing, SensorFrame& frame) {
+/// The laser scan cell: "<beam count>" then ";<range>" per beam (whole millimetres or an
+/// error code, 0 … 65535).
+LaserScan parse_laser_scan(const CellReader& c) {
+    const std::string_view text = c.text(kLaserScan);
+    std::size_t end = text.find(format::kRangeSeparator);
+    const auto count = format::parse<int>(text.substr(0, end));
+    if (!count || *count < 0 || *count > kMaxScanBeams) {
+        c.fail(kLaserScan, "expected the beam count (0 … " + std::to_string(kMaxScanBeams)
+                               + ") first, then \";range\" per beam in millimetres");
+    }
+    LaserScan scan;
+    scan.beam_count = static_cast<std::uint16_t>(*count);
+    for (int i = 0; i < *count; ++i) {
+        const std::string beam_name = "beam " + std::to_string(i);
+        if (end == std::string_view::npos) {
+            c.fail(kLaserScan, "the count says " + std::to_string(*count) + " beams, " + beam_name
+                                   + " is missing");
+        }
+        const std::size_t start = end + 1;
+        end = text.find(format::kRangeSeparator, start);
+        const auto range = format::parse<std::uint16_t>(text.substr(start, end - start));
+        if (!range) {
+            c.fail(kLaserScan, beam_name + ": the range must be whole millimetres, 0 … 65535");
+        }
+        scan.range_mm[static_cast<std::size_t>(i)] = *range;
+    }
+    if (end != std::string_view::npos) {
+        c.fail(kLaserScan, "more ranges than the beam count " + std::to_string(*count));
+    }
+    return scan;
+}
+
+/// The optional-sensor cells (version 2, and 3's laser scan) into `frame`; all empty in a
+/// record without a frame.
+void parse_optional_sensors(const CellReader& c, int version, bool frame_missing,
+                            SensorFrame& frame) {
+    const int last = version >= 3 ? kLaserScan : kBeacons;
     if (frame_missing) {
-        for (int column = kGyro; column <= kBeacons; ++column) {
+        for (int column = kGyro; column <= last; ++column) {
             c.require_empty(column, "must be empty in a record without a frame");
         }
         return;
@@ -292,11 +330,15 @@ void parse_optional_sensors(const CellReader& c, bool frame_missing, SensorFrame
     if (frame.has_beacon_scan) {
         frame.beacons = parse_beacons(c);
     }
+    frame.has_laser_scan = version >= 3 && !c.empty(kLaserScan);
+    if (frame.has_laser_scan) {
+        frame.laser = parse_laser_scan(c);
+    }
 }
 
 RunLogRecord parse_record(const LineReader& reader, std::string_view line, int version) {
     const std::vector<std::string_view> cells = split(line);
-    const int columns = version == 1 ? format::kColumnCountV1 : format::kColumnCount;
+    const int columns = format::column_count(version);
     if (static_cast<int>(cells.size()) != columns) {
         reader.fail("a record has " + std::to_string(columns) + " cells, this line "
                     + std::to_string(cells.size()));
@@ -337,7 +379,7 @@ RunLogRecord parse_record(const LineReader& reader, std::string_view line, int v
         }
     }
     if (version >= 2) {
-        parse_optional_sensors(c, record.frame_missing, record.frame);
+        parse_optional_sensors(c, version, record.frame_missing, record.frame);
     }
     return record;
 }
@@ -417,8 +459,7 @@ RunLog load_run_log(const std::filesystem::path& path) {
     log.header.link = header_value(reader, format::kLink);
     read_config(reader, log);
     const std::string columns = header_value(reader, format::kColumns);
-    const std::string_view expected_columns =
-        log.header.version == 1 ? format::kColumnListV1 : format::kColumnList;
+    const std::string_view expected_columns = format::column_list(log.header.version);
     if (columns != expected_columns) {
         reader.fail("unexpected columns for format version " + std::to_string(log.header.version)
                         + " (expected " + std::string(expected_columns) + ")",

@@ -5,6 +5,7 @@
 
 #include "legofeup/core/odometry.hpp"
 #include "legofeup/lessons/config_file.hpp"
+#include "legofeup/lessons/config_schema.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "run_log_format.hpp"
 
@@ -16,7 +17,8 @@ namespace format = run_log_format;
 /// The configuration the loop of `run` really runs with. A robot profile (CLI --profile)
 /// changes the loop's odometry and IR curve after resolve(); those values go into the
 /// configuration as explicit settings so that resolving the recorded configuration gives
-/// the same loop. The world file becomes absolute, so the log reads from any directory.
+/// the same loop. The world and map files become absolute (built-in names stay as they
+/// are), so the log reads from any directory.
 RunConfig configuration_as_run(const ResolvedRun& run) {
     RunConfig config = run.config;
     const LoopConfig& loop = run.loop;
@@ -32,12 +34,19 @@ RunConfig configuration_as_run(const ResolvedRun& run) {
     }
     config.robot.wheel_base = loop.odometry.wheel_base;
     config.ir_curve = loop.ir_curve;
-    if (!config.world_file.empty()) {
+    for (const Setting& setting : run_settings()) {
+        if (!setting.built_in_files) {
+            continue;
+        }
+        const std::string file = std::get<std::string>(setting.get(config));
+        const auto& built_in = setting.built_in_files();
+        if (file.empty() || std::find(built_in.begin(), built_in.end(), file) != built_in.end()) {
+            continue;
+        }
         std::error_code ignored;
-        const std::filesystem::path absolute =
-            std::filesystem::absolute(config.world_file, ignored);
+        const std::filesystem::path absolute = std::filesystem::absolute(file, ignored);
         if (!absolute.empty()) {
-            config.world_file = absolute.lexically_normal().string();
+            setting.set(config, absolute.lexically_normal().string());
         }
     }
     return config;
@@ -48,11 +57,28 @@ std::size_t line_count(const std::string& text) {
            + (text.empty() || text.back() == '\n' ? 0 : 1);
 }
 
-/// The version-2 cells of the optional sensors, each with its leading comma: empty when the
-/// frame lacked the sensor (or there was no frame). docs/recording.md, "Optional sensors".
+/// The version-3 laser scan cell "<beam count>;<r0>;…" (ranges in whole millimetres or
+/// error codes), with its leading comma; empty when the frame carried no scan.
+void append_laser_scan_cell(const SensorFrame& frame, std::string& cells) {
+    cells += ',';
+    if (!frame.has_laser_scan) {
+        return;
+    }
+    const LaserScan& scan = frame.laser;
+    const int count = std::min<int>(scan.beam_count, kMaxScanBeams);
+    cells += std::to_string(count);
+    for (int i = 0; i < count; ++i) {
+        cells += format::kRangeSeparator;
+        cells += std::to_string(scan.range_mm[static_cast<std::size_t>(i)]);
+    }
+}
+
+/// The version-2 and -3 cells of the optional sensors, each with its leading comma: empty
+/// when the frame lacked the sensor (or there was no frame). docs/recording.md, "Optional
+/// sensors".
 std::string optional_sensor_cells(const SensorFrame& frame, bool frame_missing) {
     if (frame_missing) {
-        return ",,,,,,,";
+        return ",,,,,,,,";
     }
     std::string cells;
     const auto cell = [&cells](bool present, int value) {
@@ -78,6 +104,7 @@ std::string optional_sensor_cells(const SensorFrame& frame, bool frame_missing) 
                      + format::kIdBearingSeparator + format::number(sighting.bearing);
         }
     }
+    append_laser_scan_cell(frame, cells);
     return cells;
 }
 

@@ -10,7 +10,8 @@
 //        8    4 sequence  u32, counts the sender's packets on this stream
 //       12    8 time_us   u64, simulated time in microseconds
 //       20  ... payload   fixed for each type (the sensor frame may carry an extension block
-//                         of the further lessons' sensors: 36 bytes, or 52 + 9 per sighting)
+//                         of the further lessons' sensors: 36 bytes, or 52 + 9 per beacon
+//                         sighting + 2 per laser beam)
 //
 // All integers are little-endian, all reals IEEE-754 binary64 little-endian. Decoders never
 // trust a field: every malformation is reported as a DecodeError for the caller to count.
@@ -34,8 +35,20 @@ namespace legofeup::comms {
 inline constexpr std::array<std::uint8_t, 4> kMagic{'L', 'F', 'U', 'P'};
 inline constexpr std::uint8_t kProtocolVersion = 1;
 inline constexpr std::size_t kHeaderSize = 20;
-/// No valid packet is longer; anything longer is dropped as oversized.
-inline constexpr std::size_t kMaxPacketSize = 512;
+
+/// The sensor frame's optional extension block (docs/protocol.md, "SensorFrame extension"):
+/// 16 fixed bytes after the plain 36-byte frame, then 9 bytes per beacon sighting, then 2 per
+/// laser beam (u16 millimetres or error code).
+inline constexpr std::size_t kFrameExtensionOffset = 36;
+inline constexpr std::size_t kFrameSightingsOffset = 52;
+inline constexpr std::size_t kFrameSightingSize = 9;  ///< u8 id + f64 bearing
+inline constexpr std::size_t kFrameRangeSize = 2;     ///< u16 per laser beam
+
+/// No valid packet is longer; anything longer is dropped as oversized. The longest is a sensor
+/// frame with eight sightings and a scan of kMaxScanBeams beams: 52 + 72 + 2048 = 2172 bytes.
+inline constexpr std::size_t kMaxPacketSize =
+    kFrameSightingsOffset + kFrameSightingSize * static_cast<std::size_t>(kMaxBeaconSightings)
+    + kFrameRangeSize * static_cast<std::size_t>(kMaxScanBeams);
 
 /// Default ports: the robot stream (frames out, commands in), the ground-truth stream and
 /// control requests. A server started with base port P uses P, P + 1 and P + 2.
@@ -60,18 +73,14 @@ enum class PacketType : std::uint8_t {
 /// For SensorFrame: the length of the plain frame (no extension block); see frame_size().
 std::size_t packet_size(PacketType type);
 
-/// The sensor frame's optional extension block (docs/protocol.md, "SensorFrame extension"):
-/// 16 fixed bytes after the plain 36-byte frame, then 9 bytes per beacon sighting.
-inline constexpr std::size_t kFrameExtensionOffset = 36;
-inline constexpr std::size_t kFrameSightingsOffset = 52;
-inline constexpr std::size_t kFrameSightingSize = 9;  ///< u8 id + f64 bearing
-
 /// The length of the sensor frame that carries `frame`: the plain 36 bytes when it has none
-/// of the optional sensors, else 52 + 9 × min(beacon count, kMaxBeaconSightings).
+/// of the optional sensors, else 52 + 9n + 2m with n = min(beacon count, kMaxBeaconSightings)
+/// if it has a beacon scan (else 0) and m = min(laser beam count, kMaxScanBeams) if it has a
+/// laser scan (else 0).
 std::size_t frame_size(const SensorFrame& frame);
 
 /// Whether `length` is a valid length field for `type`: packet_size(type) for every type;
-/// for SensorFrame also 52 + 9n, n = 0 … kMaxBeaconSightings.
+/// for SensorFrame also 52 + 9n + 2m, n = 0 … kMaxBeaconSightings, m = 0 … kMaxScanBeams.
 bool is_valid_length(PacketType type, std::size_t length);
 std::string_view to_string(PacketType type);
 

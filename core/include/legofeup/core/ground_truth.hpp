@@ -4,6 +4,7 @@
 // travels on its own stream (docs/protocol.md).
 
 #include <array>
+#include <cstdint>
 
 #include "legofeup/core/motion.hpp"
 #include "legofeup/core/state.hpp"
@@ -24,6 +25,10 @@ struct GroundTruth {
     double gyro_bias_rate = 0.0;
     /// The compass disturbance field at the robot's position, rad (0 without one).
     double magnetic_disturbance = 0.0;
+    /// How many times the robot was moved instantly since the last reset: teleports
+    /// (GUI, control requests) and the simulator's displacement and kidnap events. A change
+    /// between two truths says a kidnapping happened in between.
+    std::uint32_t teleports = 0;
 };
 
 }  // namespace legofeup

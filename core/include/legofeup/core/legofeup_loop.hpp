@@ -12,13 +12,15 @@
 //
 // The further lessons replace what corrects the odometry (LessonFilters::localisation):
 // bearings to beacons (paper 002), the 5-state encoder + accelerometer + gyro EKF (paper 003)
-// or a compass with state-dependent odometry noise (paper 004). The pose filter is an EKF or
+// or a compass with state-dependent odometry noise (paper 004), or a laser scan matched (ICP)
+// against the expected scan in an occupancy-grid map (paper 001). The pose filter is an EKF or
 // a UKF (a live setting); a "shadow" of the other kind can run on the same frames for
 // comparison. The speed estimators of paper 003 run beside every localisation.
 
 #include <vector>
 
 #include "legofeup/core/gyro_fusion_estimator.hpp"
+#include "legofeup/core/laser_localiser.hpp"
 #include "legofeup/core/loop_config.hpp"
 #include "legofeup/core/loop_snapshot.hpp"
 #include "legofeup/core/pose_filter.hpp"
@@ -70,6 +72,8 @@ class LegoFeupLoop {
     void update_with_walls(PoseFilter& filter, bool primary);
     void update_with_beacons(PoseFilter& filter, const SensorFrame& frame, bool primary);
     void update_with_compass(PoseFilter& filter, const LoopSnapshot& s);
+    void update_with_laser(PoseFilter& filter, const SensorFrame& frame, bool primary);
+    void begin_laser_report();
     void run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict, bool primary);
     void run_gyro_fusion(const SensorFrame* frame, double period);
     void control_and_publish();
@@ -79,6 +83,11 @@ class LegoFeupLoop {
     PoseFilter filter_;
     PoseFilter shadow_;  ///< the other kind, when lesson.compare_kinds
     GyroFusionEstimator fusion_;
+    // The laser lesson's scan matching, one per pose filter (each matches against its own
+    // prediction and keeps its own mismatch streak); the shadow's report is not published.
+    LaserLocaliser laser_;
+    LaserLocaliser shadow_laser_;
+    LaserUpdate shadow_laser_report_;
     SpeedEstimators speeds_;
     double last_time_ = 0.0;
     Controller controller_;

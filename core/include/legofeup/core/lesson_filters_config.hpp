@@ -9,6 +9,8 @@
 #include <string_view>
 
 #include "legofeup/core/angles.hpp"
+#include "legofeup/core/icp_2d.hpp"
+#include "legofeup/core/laser_scan.hpp"
 
 namespace legofeup {
 
@@ -19,9 +21,11 @@ enum class Localisation : std::uint8_t {
     GyroFusion,  ///< 5-state EKF [x, y, θ, v, ω]: encoders, accelerometers, gyroscope (paper 003
                  ///< §3.4)
     Compass,     ///< odometry with state-dependent noise + magnetic compass (paper 004)
+    Laser,       ///< laser scan matched (ICP) against the expected scan in a map (paper 001)
 };
 const char* to_string(Localisation localisation);
-/// The inverse of to_string ("walls", "beacons", "gyro_fusion", "compass"); nullopt otherwise.
+/// The inverse of to_string ("walls", "beacons", "gyro_fusion", "compass", "laser"); nullopt
+/// otherwise.
 std::optional<Localisation> localisation_from_string(std::string_view text);
 
 /// The Gaussian filter that runs the pose estimate (Walls, Beacons and Compass).
@@ -81,6 +85,10 @@ struct GyroFusionTuning {
     double r_w_gyro = 3e-4;          ///< (rad/s)² of the gyroscope rate
     bool use_gyro = true;            ///< false: encoders (and accelerometers) only
     bool use_accelerometers = true;  ///< false: constant-velocity prediction
+    /// Slip detection: with the gyro in use, the encoders' (v, ω) are rejected when their NIS
+    /// against the gyro-corrected state exceeds the χ²(2) quantile at this probability — the
+    /// wheels turn but the body does not (a robot pushing against a wall). 0 switches it off.
+    double encoder_gate_probability = 0.999;
 };
 
 /// Odometry with state-dependent noise and a compass (paper 004 eq. 5 and 11).
@@ -102,6 +110,39 @@ struct ExtraSensorCalibration {
     double gravity = 9.80665;  ///< m/s²
 };
 
+/// Laser scan matching against a map (paper 001): ray-cast the expected scan at the predicted
+/// pose, ICP it against the measured scan, and use the match as a pose observation with
+/// H = I (eq. 14–18). Defaults are the paper's appendix.
+struct LaserTuning {
+    /// eq. 13: Q = diag(q_stat + q_dyn·|Δ_odom|) for x, y, θ, added each prediction
+    /// (m², m², rad²; the dynamic parts per metre / radian of odometry increment).
+    double q_x_static = 0.0005;
+    double q_y_static = 0.0005;
+    double q_theta_static = 0.0005;
+    double q_x_dynamic = 0.001;
+    double q_y_dynamic = 0.001;
+    double q_theta_dynamic = 0.0011;
+    /// eq. 16: R = diag(r_x, r_y, r_θ) of the ICP pose observation (m², m², rad²).
+    double r_x = 0.008;
+    double r_y = 0.008;
+    double r_theta = 0.01;
+    IcpParams icp;
+    /// Mismatch gating (§III-B): an ICP result that did not converge or matched fewer
+    /// points than this is not used (prediction only).
+    int min_matched_points = 100;
+    /// Kidnapping recovery (§IV-B): after this many consecutive mismatches, P is multiplied
+    /// by `recovery_covariance_factor` and the ICP correspondence distance by
+    /// `recovery_correspondence_factor` (≤ 1: stricter) until the next match.
+    bool kidnap_recovery = true;
+    int recovery_after_mismatches = 100;
+    double recovery_covariance_factor = 10.0;
+    double recovery_correspondence_factor = 0.5;
+    /// Where the scanner sits on the robot (robot frame) and how its beams point, as the
+    /// filter believes; a scan's beam_count must equal geometry.beam_count.
+    Pose2 mount{};
+    ScanGeometry geometry;
+};
+
 struct LessonFilters {
     Localisation localisation = Localisation::Walls;
     FilterKind kind = FilterKind::Ekf;
@@ -114,6 +155,7 @@ struct LessonFilters {
     VelocityKfTuning velocity;
     GyroFusionTuning gyro_fusion;
     CompassTuning compass;
+    LaserTuning laser;
     ExtraSensorCalibration calibration;
 };
 

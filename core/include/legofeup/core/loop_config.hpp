@@ -3,6 +3,7 @@
 // (docs/loop.md), and their validation. Files (TOML), the GUI and the CLI all fill this
 // one structure; validate() is the single place that decides what is acceptable.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "legofeup/core/ir_geometry.hpp"
 #include "legofeup/core/lesson_filters_config.hpp"
 #include "legofeup/core/motion.hpp"
+#include "legofeup/core/occupancy_grid.hpp"
 #include "legofeup/core/odometry.hpp"
 #include "legofeup/core/sharp_ir.hpp"
 #include "legofeup/core/wall_association.hpp"
@@ -52,7 +54,10 @@ struct LoopConfig {
     /// The further lessons' estimators; `lesson.localisation` picks what corrects the
     /// odometry (the walls by default).
     LessonFilters lesson;
-    BeaconMap beacons;             ///< the filter's map of beacons (Localisation::Beacons)
+    BeaconMap beacons;  ///< the filter's map of beacons (Localisation::Beacons)
+    /// The filter's occupancy-grid map (Localisation::Laser), shared read-only between
+    /// copies of the configuration; required when the localisation is Laser.
+    std::shared_ptr<const OccupancyGrid> map;
     double control_period = 0.05;  ///< Ts, s: the nominal period (frames carry their times)
     MotionLimits motion;
     ControllerGains gains;

@@ -7,6 +7,7 @@
 
 #include "legofeup/core/controller.hpp"
 #include "legofeup/core/extended_kalman_filter.hpp"
+#include "legofeup/core/icp_2d.hpp"
 #include "legofeup/core/ir_geometry.hpp"
 #include "legofeup/core/lesson_filters_config.hpp"
 #include "legofeup/core/motion.hpp"
@@ -71,6 +72,37 @@ struct ShadowEstimate {
     StateCovariance covariance = StateCovariance::Zero();
 };
 
+/// Localisation::Laser (paper 001): what the scan matching did this period.
+struct LaserUpdate {
+    bool scan_received = false;  ///< the frame carried a scan (and a map was configured)
+    /// The ICP result was used: it converged and matched ≥ min_matched_points (§III-B), and
+    /// the filter applied the update.
+    bool matched = false;
+    StepStatus status = StepStatus::NotAttempted;  ///< of the H = I update (eq. 15–18)
+    IcpResult icp;  ///< the alignment of the measured scan onto the expected one
+    int consecutive_mismatches = 0;
+    bool recovery_triggered = false;  ///< P was multiplied this period (kidnapping, §IV-B)
+    bool recovery_active = false;     ///< ICP tightened until the next match
+    /// m: the ICP threshold used for this scan (without a scan: the one the next will use).
+    double correspondence_distance = 0.0;
+    Pose2 scanner_pose;   ///< predicted scanner pose the expected scan was cast from (world)
+    Pose2 observed_pose;  ///< Z: the robot pose the match implies (eq. 2), world frame
+    Eigen::Vector3d innovation = Eigen::Vector3d::Zero();  ///< V = Z − Ẑ (eq. 3), θ wrapped
+    LaserScan expected;  ///< ray-cast at scanner_pose in the filter's map (Fig. 2)
+    /// The scan's beam_count differed from lesson.laser.geometry.beam_count: it was skipped
+    /// (no ICP, not counted as a mismatch).
+    bool wrong_beam_count = false;
+    int measured_points = 0;  ///< points of the measured scan given to the ICP (source)
+    int expected_points = 0;  ///< points of the expected scan (the ICP's reference)
+    double nis = 0.0;         ///< Vᵀ(P + R)⁻¹V of the update (χ²(3) when consistent)
+    /// Since the last reset: scans matched against the map (skipped ones excluded), scans
+    /// whose match was used, covariance inflations, and scans skipped for their beam count.
+    std::uint32_t total_scans = 0;
+    std::uint32_t total_matches = 0;
+    std::uint32_t total_recoveries = 0;
+    std::uint32_t total_skipped = 0;
+};
+
 struct LoopSnapshot {
     std::uint64_t step = 0;      ///< frames processed since the last reset (1 for the first)
     double time = 0.0;           ///< the frame's time stamp, s
@@ -103,6 +135,7 @@ struct LoopSnapshot {
     WallUpdateReport update;             ///< status NotAttempted when no update ran
 
     BeaconUpdates beacons;  ///< Localisation::Beacons
+    LaserUpdate laser;      ///< Localisation::Laser
     ExtraReadings readings;
     SpeedEstimates speeds;
     ShadowEstimate shadow;

@@ -7,6 +7,8 @@
 #include <array>
 #include <cstdint>
 
+#include "legofeup/core/laser_scan.hpp"
+
 namespace legofeup {
 
 /// At most this many beacon sightings per scan (more beacons are allowed in a world; the
@@ -60,6 +62,10 @@ struct SensorFrame {
     /// Compass heading in whole degrees [0, 360), measured counter-clockwise from the world's
     /// x axis (the arena's "magnetic east"), disturbed by the indoor field.
     std::int16_t compass_deg = 0;
+    bool has_laser_scan = false;
+    /// The laser rangefinder's scan completed in this period (paper 001; URG-04LX-like,
+    /// one scan per 100 ms, so on every other 50 ms frame).
+    LaserScan laser;
 };
 
 }  // namespace legofeup

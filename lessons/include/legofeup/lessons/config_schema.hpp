@@ -29,6 +29,10 @@ struct Setting {
     /// For optional settings: whether the configuration sets it (files write unset ones as
     /// comments). Empty for settings that always have a value.
     std::function<bool(const RunConfig&)> is_set;
+    /// For Text settings that name a file: the names that select a built-in file (kept as
+    /// written); any other relative path is taken from the configuration file's directory.
+    /// Empty for settings that are not files.
+    std::function<const std::vector<std::string>&()> built_in_files;
 
     std::string section() const;  ///< the part of key before the dot ("" at the top level)
     std::string name() const;     ///< the part after it

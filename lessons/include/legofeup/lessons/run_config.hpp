@@ -19,7 +19,10 @@ namespace legofeup::lessons {
 struct RoutineSpec {
     /// Shuttle: back and forth between line_from and line_to (`laps` times); Piecewise: the
     /// world's square corners with a stop of `pause` s at each (paper 004); Random:
-    /// `random_points` random places inside the square path, drawn from the run's seed.
+    /// `random_points` random places inside the square path, drawn from the run's seed;
+    /// Rectangle: `laps` laps of the axis-aligned rectangle with lower-left corner
+    /// `rectangle_corner` and size `rectangle_size`, counter-clockwise from that corner
+    /// (paper 001's "rectangular shaped lap").
     enum class Kind : std::uint8_t {
         Square,
         Line,
@@ -28,7 +31,8 @@ struct RoutineSpec {
         Manual,
         Shuttle,
         Piecewise,
-        Random
+        Random,
+        Rectangle
     };
     Kind kind = Kind::Square;
     double pause = 0.0;     ///< s stopped at each waypoint (shuttle, piecewise, random)
@@ -39,6 +43,8 @@ struct RoutineSpec {
     double circle_radius = 0.5;
     bool circle_clockwise = false;
     Pose2 goto_target{0.0, 0.0, 0.0};
+    Vector2 rectangle_corner{-1.0, -1.0};  ///< m: lower-left corner, where each lap starts
+    Vector2 rectangle_size{2.0, 2.0};      ///< m: width (along x) and height (along y)
 };
 
 /// How the robot is built as far as the filter knows (the [robot] section). The simulated
@@ -72,9 +78,13 @@ struct SettingOrigin {
 
 struct RunConfig {
     std::uint64_t seed = 1;
-    int laps = 2;            ///< laps of the square path
-    double duration = 0.0;   ///< simulated seconds for other routines; 0: 200 s per lap
-    std::string world_file;  ///< empty: the built-in standard arena
+    int laps = 2;           ///< laps of the square path
+    double duration = 0.0;  ///< simulated seconds for other routines; 0: 200 s per lap
+    /// Empty: the built-in standard arena; a built-in world's name ("office"); else a path.
+    std::string world_file;
+    /// The laser filter's map (Localisation::Laser): empty: the world's map; a built-in
+    /// map's name; else a map YAML path. A different map than the world's is an outdated map.
+    std::string laser_map_file;
 
     FilterTuning filter;
     /// The further lessons: localisation, EKF/UKF, their filters' tunings and calibration.

@@ -48,6 +48,7 @@ struct RobotSpec {
     GyroSpec gyro;
     AccelerometerSpec accelerometers;
     CompassSpec compass;
+    LaserScannerSpec laser_scanner;
 
     /// Actual diameters of the right and left wheels from the average and E_d.
     double right_wheel_diameter() const;

@@ -8,6 +8,8 @@
 
 #include "legofeup/core/angles.hpp"
 #include "legofeup/core/config_issue.hpp"
+#include "legofeup/core/laser_scan.hpp"
+#include "legofeup/core/state.hpp"
 
 namespace legofeup::sim {
 
@@ -56,5 +58,32 @@ std::vector<ConfigIssue> validate(const BeaconScannerSpec& spec, const std::stri
 std::vector<ConfigIssue> validate(const GyroSpec& spec, const std::string& prefix);
 std::vector<ConfigIssue> validate(const AccelerometerSpec& spec, const std::string& prefix);
 std::vector<ConfigIssue> validate(const CompassSpec& spec, const std::string& prefix);
+
+/// A laser rangefinder modelled on the Hokuyo URG-04LX (paper 001): 682 beams over 240°,
+/// one scan every 100 ms, ranges in whole millimetres from 20 mm to range_max, each beam a
+/// closest-hit ray cast in the world. Range noise is Gaussian with σ = sigma_near up to
+/// `noise_knee` and σ = sigma_relative·range beyond (≈10 mm under 1 m, 1 % beyond).
+/// Beyond the range: kRangeNoEcho; nearer than range_min: kRangeTooNear; a beam drops out
+/// (kRangeDropout) with probability dropout_probability.
+/// The scan is taken at the pose at the end of the control period in which it completes (no
+/// motion distortion), and that period's frame carries it (docs/sensors.md).
+struct LaserScannerSpec {
+    bool enabled = false;
+    ScanGeometry geometry;
+    Pose2 mount{};                     ///< the scanner's pose on the robot (robot frame)
+    double scan_period = 0.1;          ///< s; a whole number of control periods
+    double sigma_near = 0.01;          ///< m, σ of the range noise up to noise_knee
+    double noise_knee = 1.0;           ///< m
+    double sigma_relative = 0.01;      ///< σ/range beyond noise_knee
+    double dropout_probability = 0.0;  ///< per beam that would report a distance
+};
+
+/// Everything wrong with a laser scanner (fields "<prefix>.<name>", the geometry's
+/// "<prefix>.geometry.<name>"): the geometry (validate(ScanGeometry)), range_min of at least
+/// 0.02 m (so every distance reads ≥ 20 mm, above the error codes), a finite mount, a scan
+/// period of 1 ms … 10 s, noise σ of 0 … 1 m (relative 0 … 1), a probability in [0, 1]. That
+/// an enabled scanner's period is a whole number of control periods is checked with the
+/// settings (validate(RobotSpec, SimulatorSettings), simulator.hpp).
+std::vector<ConfigIssue> validate(const LaserScannerSpec& spec, const std::string& prefix);
 
 }  // namespace legofeup::sim

@@ -33,10 +33,24 @@ struct SimulatorSettings {
         double dy = 0.0;      ///< m
         double dtheta = 0.0;  ///< rad
     } displacement;
+
+    /// A kidnapping to a known place (paper 001 §IV-B): at the start of the first control
+    /// period whose end time is ≥ `time`, the robot is lifted to `pose` (world frame), at
+    /// rest; the encoders do not see it. Once per run (again after a reset).
+    struct KidnapEvent {
+        bool enabled = false;
+        double time = 0.0;  ///< s
+        Pose2 pose;         ///< where the robot is put down
+    } kidnap;
 };
 
 /// Everything wrong with the settings; fields are named "simulator.<name>".
 std::vector<ConfigIssue> validate(const SimulatorSettings& settings);
+/// Everything wrong with the robot and the settings together: validate(robot),
+/// validate(settings), and what depends on both (an enabled laser scanner's scan period must
+/// be a whole number of control periods, "simulator.laser_scanner.scan_period"). The
+/// simulator's constructor and set_robot check this.
+std::vector<ConfigIssue> validate(const RobotSpec& robot, const SimulatorSettings& settings);
 
 class Simulator {
   public:
@@ -49,13 +63,15 @@ class Simulator {
     /// Back to time 0 at `start` with all noise streams reseeded.
     void reset(const Pose2& start, std::uint64_t seed);
     /// Moves the robot instantly (a kidnapping), at rest; time and encoders go on.
+    /// GroundTruth::teleports counts it.
     void teleport(const Pose2& pose);
 
     /// Wheel speeds for the motors, m/s. Like the NXT firmware, the motors turn them into
     /// wheel rotation with the nominal diameter; the real wheels then roll their own.
     void set_wheel_command(const WheelSpeeds& command);
     /// Changes noise and error parameters while running (e.g. from the GUI). The geometry
-    /// of the body (mass, chassis, wheel base) is fixed at construction and reset.
+    /// of the body (mass, chassis, wheel base) is fixed at construction and reset. Throws
+    /// std::invalid_argument if validate(robot, settings()) finds anything.
     void set_robot(const RobotSpec& robot);
 
     void step_physics();

@@ -2,12 +2,14 @@
 // The simulated world as plain data: what a world file describes. Box2D never appears in
 // this header (or any other public header of sim/).
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "legofeup/core/beacons.hpp"
 #include "legofeup/core/config_issue.hpp"
 #include "legofeup/core/follow_path.hpp"
+#include "legofeup/core/occupancy_grid.hpp"
 #include "legofeup/core/state.hpp"
 #include "legofeup/core/walls.hpp"
 
@@ -41,11 +43,18 @@ struct WorldSpec {
     BeaconMap beacons;
     /// The compass's disturbance field; none by default.
     MagneticDisturbance magnetic;
+    /// An occupancy-grid map (paper 001) whose occupied cells are solid in the world, beside
+    /// the walls; none by default. Shared read-only (the filter may use the same map).
+    std::shared_ptr<const OccupancyGrid> map;
 };
 
 /// Everything wrong with a world the simulator would run in: duplicate beacon ids, ids
-/// outside 0–255, non-finite positions, a negative amplitude or non-positive wavelength.
-/// Fields are named "world.beacon[<i>].id", "world.magnetic.amplitude_deg", ...
+/// outside 0–255, non-finite positions, a negative amplitude or non-positive wavelength; and
+/// for a map: no cells, more than 10000 cells a side, a resolution outside 0.01 … 10 m, an
+/// origin beyond ±1000 m (or a yaw beyond ±2π), an extent over 1000 m a side (Box2D computes
+/// in floats) or a start pose inside an occupied cell.
+/// Fields are named "world.beacon[<i>].id", "world.magnetic.amplitude_deg",
+/// "world.map.resolution", "world.map.origin.x", ...
 std::vector<ConfigIssue> validate(const WorldSpec& world);
 
 /// The standard LegoFeup arena of the paper, built from the scenario's numbers, with four

@@ -28,8 +28,9 @@ namespace legofeup::lessons {
 inline constexpr const char* kRunLogFormat = "legofeup-run-log";
 /// The version this program writes and the newest it reads (it reads every older one too).
 /// Version 2 added the optional sensors of SensorFrame (gyro, accelerometers, compass,
-/// beacon scan); a version-1 log reads as frames without them.
-inline constexpr int kRunLogVersion = 2;
+/// beacon scan); a version-1 log reads as frames without them. Version 3 added the laser
+/// scan; a version-1 or -2 log reads as frames without one.
+inline constexpr int kRunLogVersion = 3;
 
 /// What the header says about the run, besides its configuration.
 struct RunLogHeader {

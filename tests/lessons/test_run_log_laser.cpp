@@ -1,0 +1,378 @@
+// Run log format version 3: a frame's laser scan is written as "<beam count>;<range>;…" and
+// read back exactly (error codes included), a version-2 log still loads (as frames without
+// scans), malformed scan cells are reported at file:line with the column, and a recorded
+// laser run in the office replays bit for bit, so re-filtering it compares filters on the
+// identical scans (docs/recording.md).
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/lockstep_run.hpp"
+#include "legofeup/lessons/recording/refilter.hpp"
+#include "legofeup/lessons/recording/run_log.hpp"
+#include "legofeup/lessons/run_config.hpp"
+
+namespace legofeup::lessons {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_file(const std::string& name) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("legofeup_run_log_laser_tests_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir / name;
+}
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines) {
+        text += line + '\n';
+    }
+    return text;
+}
+
+std::vector<std::string> cells_of(const std::string& line) {
+    std::vector<std::string> cells;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = line.find(',', start);
+        cells.push_back(line.substr(start, comma - start));
+        if (comma == std::string::npos) {
+            return cells;
+        }
+        start = comma + 1;
+    }
+}
+
+std::string joined_cells(const std::vector<std::string>& cells) {
+    std::string line;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        line += (i == 0 ? "" : ",") + cells[i];
+    }
+    return line;
+}
+
+SensorFrame base_frame(std::uint32_t sequence) {
+    SensorFrame frame;
+    frame.time = 0.05 * sequence;
+    frame.sequence = sequence;
+    frame.encoder_counts = {static_cast<std::int32_t>(7 * sequence), 11};
+    frame.ir_adc = {250, 260};
+    frame.ir_valid = {true, true};
+    return frame;
+}
+
+/// A URG-like scan (682 beams) with every kind of value: error codes 0, 1, 2 and others
+/// below 20, the smallest distance, the largest 16-bit value; a scan of no beams; the
+/// largest scan; a frame without one; a three-beam scan next to a compass reading.
+std::vector<SensorFrame> frames() {
+    std::vector<SensorFrame> out;
+    SensorFrame urg = base_frame(1);
+    urg.has_laser_scan = true;
+    urg.laser.beam_count = 682;
+    for (std::size_t i = 0; i < 682; ++i) {
+        urg.laser.range_mm[i] = static_cast<std::uint16_t>((i * 7919U) % 5600U);
+    }
+    urg.laser.range_mm[0] = kRangeNoEcho;
+    urg.laser.range_mm[1] = kRangeTooNear;
+    urg.laser.range_mm[2] = kRangeDropout;
+    urg.laser.range_mm[3] = 19;
+    urg.laser.range_mm[4] = kRangeFirstValid;
+    urg.laser.range_mm[681] = 65535;
+    out.push_back(urg);
+    SensorFrame empty = base_frame(2);
+    empty.has_laser_scan = true;
+    out.push_back(empty);
+    SensorFrame largest = base_frame(3);
+    largest.has_laser_scan = true;
+    largest.laser.beam_count = kMaxScanBeams;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(kMaxScanBeams); ++i) {
+        largest.laser.range_mm[i] = static_cast<std::uint16_t>(1000 + i);
+    }
+    out.push_back(largest);
+    out.push_back(base_frame(4));
+    SensorFrame small = base_frame(5);
+    small.has_laser_scan = true;
+    small.laser.beam_count = 3;
+    small.laser.range_mm[0] = 1234;
+    small.laser.range_mm[1] = 0;
+    small.laser.range_mm[2] = 4000;
+    small.has_compass = true;
+    small.compass_deg = 90;
+    out.push_back(small);
+    return out;
+}
+
+/// Records frames() (then a step without a frame) through the writer, with an empty
+/// configuration block (these tests are about the records).
+fs::path record(const std::string& name) {
+    const fs::path path = temp_file(name);
+    {
+        const ResolvedRun run{};
+        RunLogWriter writer(path, run, "laser scans");
+        std::uint64_t step = 0;
+        for (const SensorFrame& frame : frames()) {
+            LoopSnapshot snapshot;
+            snapshot.step = ++step;
+            snapshot.time = frame.time;
+            snapshot.frame = frame;
+            writer.on_step(snapshot, GroundTruth{});
+        }
+        LoopSnapshot missing;
+        missing.step = ++step;
+        missing.time = 0.3;
+        missing.frame_missing = true;
+        missing.frame.time = 0.3;
+        missing.frame.has_laser_scan = true;  // whatever a missing frame holds is not recorded
+        missing.frame.laser.beam_count = 5;
+        writer.on_step(missing, GroundTruth{});
+        writer.close();
+    }
+    std::vector<std::string> kept;
+    const std::vector<std::string> lines = lines_of(read_text(path));
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        if (lines[i].rfind("config: ", 0) == 0) {
+            kept.push_back("config: 0 lines");
+            i += static_cast<std::size_t>(std::stoi(lines[i].substr(8)));
+        } else {
+            kept.push_back(lines[i]);
+        }
+    }
+    write_text(path, joined(kept));
+    return path;
+}
+
+int first_record_line(const std::vector<std::string>& lines) {
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        if (lines[i].rfind("columns: ", 0) == 0) {
+            return static_cast<int>(i) + 1;
+        }
+    }
+    ADD_FAILURE() << "no columns line";
+    return 0;
+}
+
+std::string message_of(const fs::path& path) {
+    try {
+        load_run_log(path);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "(no error)";
+}
+
+TEST(RunLogLaser, EveryScanRoundTripsExactly) {
+    const fs::path path = record("scans.log");
+    const std::string text = read_text(path);
+    EXPECT_EQ(text.rfind("legofeup-run-log 3\n", 0), 0U);
+    EXPECT_NE(text.find(",beacons,laser_scan\n"), std::string::npos);
+    const RunLog log = load_run_log(path);
+    EXPECT_EQ(log.header.version, 3);
+    const std::vector<SensorFrame> expected = frames();
+    ASSERT_EQ(log.records.size(), expected.size() + 1);
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        SCOPED_TRACE(i);
+        const SensorFrame& frame = log.records[i].frame;
+        EXPECT_EQ(frame.has_laser_scan, expected[i].has_laser_scan);
+        EXPECT_EQ(frame.laser, expected[i].laser);  // all kMaxScanBeams entries
+        EXPECT_EQ(frame.encoder_counts, expected[i].encoder_counts);
+        EXPECT_EQ(frame.has_compass, expected[i].has_compass);
+    }
+    EXPECT_TRUE(log.records.back().frame_missing);
+    EXPECT_FALSE(log.records.back().frame.has_laser_scan);
+}
+
+TEST(RunLogLaser, TheCellIsTheCountThenEachRangeInMillimetres) {
+    const std::vector<std::string> lines = lines_of(read_text(record("cells.log")));
+    const std::size_t first = static_cast<std::size_t>(first_record_line(lines));
+    const auto last_cell = [&](std::size_t record) {
+        const std::vector<std::string> cells = cells_of(lines[first + record]);
+        EXPECT_EQ(cells.size(), 32U);
+        return cells.back();
+    };
+    const std::string urg = last_cell(0);
+    EXPECT_EQ(urg.rfind("682;0;1;2;19;20;", 0), 0U) << urg.substr(0, 40);
+    EXPECT_EQ(urg.substr(urg.size() - 6), ";65535");
+    EXPECT_EQ(last_cell(1), "0");
+    EXPECT_EQ(last_cell(2).rfind("1024;1000;1001;", 0), 0U);
+    EXPECT_EQ(last_cell(3), "");
+    EXPECT_EQ(last_cell(4), "3;1234;0;4000");
+    EXPECT_EQ(last_cell(5), "");  // no frame
+}
+
+TEST(RunLogLaser, AVersionTwoLogStillLoadsAsFramesWithoutScans) {
+    std::vector<std::string> lines = lines_of(read_text(record("v3.log")));
+    lines[0] = "legofeup-run-log 2";
+    const std::size_t first = static_cast<std::size_t>(first_record_line(lines));
+    std::string& columns = lines[first - 1];
+    ASSERT_EQ(columns.substr(columns.size() - 11), ",laser_scan");
+    columns.resize(columns.size() - 11);
+    for (std::size_t i = first; i + 1 < lines.size(); ++i) {
+        std::vector<std::string> cells = cells_of(lines[i]);
+        ASSERT_EQ(cells.size(), 32U);
+        cells.pop_back();
+        lines[i] = joined_cells(cells);
+    }
+    const fs::path path = temp_file("v2.log");
+    write_text(path, joined(lines));
+    const RunLog log = load_run_log(path);
+    EXPECT_EQ(log.header.version, 2);
+    EXPECT_TRUE(log.ended);
+    ASSERT_EQ(log.records.size(), 6U);
+    for (const RunLogRecord& record : log.records) {
+        EXPECT_FALSE(record.frame.has_laser_scan);
+        EXPECT_EQ(record.frame.laser.beam_count, 0);
+    }
+    EXPECT_TRUE(log.records[4].frame.has_compass);  // version 2's sensors are still read
+
+    // A version-2 log with version 3's cells is refused: the count is the version's.
+    std::vector<std::string> mixed = lines_of(read_text(record("mixed.log")));
+    mixed[0] = "legofeup-run-log 2";
+    write_text(path, joined(mixed));
+    EXPECT_NE(
+        message_of(path).find(":" + std::to_string(first_record_line(mixed)) + ": columns = "),
+        std::string::npos)
+        << message_of(path);
+}
+
+TEST(RunLogLaser, MalformedScanCellsAreReportedAtFileLineWithTheColumn) {
+    const std::vector<std::string> lines = lines_of(read_text(record("good.log")));
+    const int first = first_record_line(lines);
+    const fs::path path = temp_file("bad.log");
+    auto message_with = [&](const std::string& value, int record = 4) {
+        std::vector<std::string> changed = lines;
+        const std::size_t index = static_cast<std::size_t>(first + record);
+        std::vector<std::string> cells = cells_of(changed[index]);
+        cells.back() = value;
+        changed[index] = joined_cells(cells);
+        write_text(path, joined(changed));
+        return message_of(path);
+    };
+    const std::string at = path.string() + ":" + std::to_string(first + 5) + ": ";
+    EXPECT_EQ(message_with("many"), at + "laser_scan = many: expected the beam count (0 … 1024) "
+                                         "first, then \";range\" per beam in millimetres");
+    EXPECT_EQ(message_with("1025"), at + "laser_scan = 1025: expected the beam count (0 … 1024) "
+                                         "first, then \";range\" per beam in millimetres");
+    EXPECT_EQ(message_with("3;1;2"),
+              at + "laser_scan = 3;1;2: the count says 3 beams, beam 2 is missing");
+    EXPECT_EQ(message_with("1;1;2"), at + "laser_scan = 1;1;2: more ranges than the beam count 1");
+    EXPECT_EQ(
+        message_with("2;5;65536"),
+        at + "laser_scan = 2;5;65536: beam 1: the range must be whole millimetres, 0 … 65535");
+    EXPECT_EQ(message_with("1;-5"),
+              at + "laser_scan = 1;-5: beam 0: the range must be whole millimetres, 0 … 65535");
+    EXPECT_EQ(message_with("1;2.5"),
+              at + "laser_scan = 1;2.5: beam 0: the range must be whole millimetres, 0 … 65535");
+    const std::string missing_at = path.string() + ":" + std::to_string(first + 6) + ": ";
+    EXPECT_EQ(message_with("1;500", 5),
+              missing_at + "laser_scan = 1;500: must be empty in a record without a frame");
+}
+
+// --- A recorded laser run ---------------------------------------------------------------------
+
+class SnapshotKeeper final : public RunObserver {
+  public:
+    void on_step(const LoopSnapshot& snapshot, const GroundTruth& /*truth*/) override {
+        snapshots.push_back(snapshot);
+    }
+    std::vector<LoopSnapshot> snapshots;
+};
+
+class Both final : public RunObserver {
+  public:
+    Both(RunObserver& a, RunObserver& b) : a_(a), b_(b) {}
+    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
+        a_.on_step(snapshot, truth);
+        b_.on_step(snapshot, truth);
+    }
+
+  private:
+    RunObserver& a_;
+    RunObserver& b_;
+};
+
+/// Ten seconds along the office lap with the laser filter and the simulated scanner.
+ResolvedRun office_laser_drive() {
+    RunConfig config;
+    config.seed = 3;
+    config.world_file = "office";
+    config.lesson.localisation = Localisation::Laser;
+    config.physical.laser_scanner.enabled = true;
+    config.routine.kind = RoutineSpec::Kind::Line;
+    config.routine.line_from = {1.0, 0.8};
+    config.routine.line_to = {5.0, 0.8};
+    config.duration = 10.0;
+    return resolve(config);
+}
+
+TEST(RunLogLaser, ARecordedLaserRunReplaysBitForBitAndRefiltersOnTheSameScans) {
+    const ResolvedRun run = office_laser_drive();
+    const fs::path path = temp_file("office.log");
+    SnapshotKeeper live;
+    {
+        RunLogWriter writer(path, run, "laser run");
+        Both both(writer, live);
+        run_lockstep(run, &both);
+        writer.close();
+    }
+    const RunLog log = load_run_log(path);
+    ASSERT_EQ(log.records.size(), live.snapshots.size());
+    int scans = 0;
+    int matches = 0;
+    for (std::size_t i = 0; i < live.snapshots.size(); ++i) {
+        EXPECT_EQ(log.records[i].frame.has_laser_scan, live.snapshots[i].frame.has_laser_scan);
+        EXPECT_EQ(log.records[i].frame.laser, live.snapshots[i].frame.laser) << i;
+        scans += log.records[i].frame.has_laser_scan ? 1 : 0;
+        matches += live.snapshots[i].laser.matched ? 1 : 0;
+    }
+    // One scan per 100 ms over 10 s, most of them matched.
+    EXPECT_GE(scans, 95);
+    EXPECT_GE(matches, scans / 2);
+
+    // The recorded configuration names the built-in world by its name and gives the same map.
+    EXPECT_EQ(log.config.world_file, "office");
+    const RefilterResult same = refilter(log, log.config);
+    EXPECT_TRUE(same.reproduces_recording());
+    EXPECT_EQ(same.old_replay_deviation, 0.0);
+
+    // Another filter on the identical scans: the laser switched off is odometry alone.
+    RunConfig odometry = log.config;
+    odometry.lesson.laser.min_matched_points = kMaxScanBeams;  // more than a scan has
+    const RefilterResult other = refilter(log, odometry);
+    double largest = 0.0;
+    for (const RefilterStep& step : other.steps) {
+        largest = std::max(largest, (step.new_estimate - step.old_estimate).norm());
+    }
+    EXPECT_GT(largest, 0.0);
+}
+
+}  // namespace
+}  // namespace legofeup::lessons
