@@ -2,3 +2,4 @@
 legofeup_add_ui_test(test_plots_panel test_plots_panel.cpp)
 legofeup_add_ui_test(test_plots_export test_plots_export.cpp)
 legofeup_add_ui_test(test_lesson_views test_lesson_views.cpp)
+legofeup_add_ui_test(test_laser_views test_laser_views.cpp)

@@ -67,16 +67,38 @@ TEST(SettingRelevance, EachLocalisationGreysTheOthersFilters) {
             EXPECT_TRUE(setting_relevant(key, l)) << key;
         }
     }
+    // The laser lesson (paper 001): its scan matching only there; its Q is its own (eq. 13),
+    // so the odometry's Q11, Q22 are the other lessons'; the simulated scanner is always
+    // there (a simulator sensor) and "laser." is not "laser_scanner.".
+    for (const char* key : {"laser.r_x", "laser.min_matched_points", "laser.icp_metric",
+                            "laser.recovery_covariance_factor", "laser.map"}) {
+        EXPECT_TRUE(setting_relevant(key, Localisation::Laser)) << key;
+        for (const Localisation l : {Localisation::Walls, Localisation::Beacons,
+                                     Localisation::GyroFusion, Localisation::Compass}) {
+            EXPECT_FALSE(setting_relevant(key, l)) << key;
+        }
+    }
+    for (const char* key : {"filter.q11", "filter.q22", "filter.r11", "ir_curve.a",
+                            "beacons.r_bearing", "compass.k_d"}) {
+        EXPECT_FALSE(setting_relevant(key, Localisation::Laser)) << key;
+    }
+    for (const char* key :
+         {"filter.kind", "laser_scanner.enabled", "kidnap.time", "control.v_ref"}) {
+        EXPECT_TRUE(setting_relevant(key, Localisation::Laser)) << key;
+        EXPECT_TRUE(setting_relevant(key, Localisation::Walls)) << key;
+    }
+    EXPECT_EQ(setting_lesson("laser.r_x"), "the laser lesson (scan matching in a map)");
+    EXPECT_EQ(setting_lesson("laser_scanner.enabled"), "");
     EXPECT_EQ(setting_lesson("filter.r11"), "the wall lesson (IR sensors)");
     EXPECT_EQ(setting_lesson("control.v_ref"), "");
 }
 
 TEST(SettingRelevance, EveryRuleNamesARealSetting) {
     // A rule that matches no key of the settings table is a typo (or a renamed section).
-    for (const char* key :
-         {"filter.r11", "filter.r22", "filter.wall_updates", "filter.gate", "filter.kind",
-          "filter.compare_kinds", "filter.ukf_kappa", "ir_curve.a", "association.range_margin",
-          "beacons.r_bearing", "gyro_fusion.q_v", "compass.k_d"}) {
+    for (const char* key : {"filter.r11", "filter.r22", "filter.wall_updates", "filter.gate",
+                            "filter.kind", "filter.compare_kinds", "filter.ukf_kappa", "ir_curve.a",
+                            "association.range_margin", "beacons.r_bearing", "gyro_fusion.q_v",
+                            "compass.k_d", "filter.q11", "filter.q22", "laser.r_x"}) {
         EXPECT_NE(lessons::find_setting_by_key(key), nullptr) << key;
     }
 }

@@ -275,7 +275,8 @@ class TestLessonViews : public QObject {
         QVERIFY(legend.contains(QStringLiteral("estimate (EKF)")));
         QVERIFY(legend.contains(QStringLiteral("UKF on the same frames, its ellipse dashed")));
         QVERIFY(legend.contains(QStringLiteral("beacons")));
-        QVERIFY(legend.contains(QStringLiteral("bearings measured, not applied")));
+        QVERIFY(legend.contains(QStringLiteral("bearings measured, applied")));
+        QVERIFY(legend.contains(QStringLiteral("not applied")));
         QVERIFY(!legend.contains(QStringLiteral("IR rays used; the wall matched")));
     }
 

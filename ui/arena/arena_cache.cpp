@@ -8,6 +8,7 @@
 
 #include "arena_drawing.hpp"
 #include "legofeup/core/angles.hpp"
+#include "legofeup/ui/arena/map_image.hpp"
 
 namespace legofeup::ui {
 
@@ -108,12 +109,19 @@ void ArenaCache::build_scene(const RunHistory& history) {
     for (const Beacon& beacon : scene.beacons) {
         scene_bounds_.add(to_point(beacon.position));
     }
+    if (scene.map) {
+        const QRectF map = map_world_bounds(*scene.map);
+        scene_bounds_.add(map.topLeft());
+        scene_bounds_.add(map.bottomRight());
+    }
 }
 
 void ArenaCache::rebuild(const RunHistory& history, EllipseConfidence level) {
     epoch_ = history.epoch();
     seen_ = 0;
     truth_.clear();
+    truth_before_jumps_.clear();
+    truth_teleports_ = 0;
     estimate_.clear();
     odometry_.clear();
     trail_.clear();
@@ -146,6 +154,12 @@ void ArenaCache::take_sample(const RunSample& sample, std::size_t index, Ellipse
     odometry_.append({snapshot.odometry_pose.x, snapshot.odometry_pose.y});
     data_bounds_.add(estimate);
     if (sample.truth) {
+        if (sample.truth->teleports != truth_teleports_ && truth_.size() > 0) {
+            // Kidnapped (or displaced) since the last truth: the path starts again there.
+            truth_before_jumps_.push_back(truth_.points());
+            truth_.clear();
+        }
+        truth_teleports_ = sample.truth->teleports;
         truth_.append({sample.truth->pose.x, sample.truth->pose.y});
     }
     if (snapshot.time >= next_trail_time_) {

@@ -60,6 +60,13 @@ ArenaColors arena_colors(const QPalette& palette) {
     colors.beacon = dark ? QColor(0xff, 0xd5, 0x4f) : QColor(0x6d, 0x4c, 0x41);  // amber / brown
     colors.shadow = dark ? QColor(0xce, 0x93, 0xd8) : QColor(0x6a, 0x1b, 0x9a);  // purple
     colors.out_of_range = with_alpha(colors.foreground, 130);
+    // The map: walls nearly as strong as the arena's walls, unknown space a light grey (both
+    // opaque mixes, drawn once per run into the map's picture).
+    colors.map_occupied = mix(colors.foreground, colors.background, 0.78);
+    colors.map_unknown = mix(colors.foreground, colors.background, 0.16);
+    colors.filter_map = with_alpha(colors.shadow, 150);
+    colors.expected_scan = mix(colors.foreground, colors.background, 0.62);
+    colors.truth_scan = mix(colors.truth, colors.background, 0.6);
     colors.trail = mix(colors.ellipse, colors.background, dark ? 0.45 : 0.38);
     colors.grid = mix(colors.foreground, colors.background, dark ? 0.11 : 0.09);
     colors.path = mix(colors.foreground, colors.background, 0.47);

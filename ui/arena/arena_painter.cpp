@@ -1,7 +1,6 @@
 #include "legofeup/ui/arena/arena_painter.hpp"
 
 #include <QFontMetricsF>
-#include <QStringList>
 #include <algorithm>
 #include <cmath>
 
@@ -26,18 +25,6 @@ QString length_text(double metres) {
     return QStringLiteral("%1 mm").arg(metres * 1000.0, 0, 'g', 3);
 }
 
-struct LegendMetrics {
-    double row = 0.0;     ///< height of one text line's row
-    double swatch = 0.0;  ///< width of the swatch
-    double pad = 8.0;
-    double gap = 6.0;
-};
-
-LegendMetrics legend_metrics(const QFont& font) {
-    const QFontMetricsF metrics(font);
-    return {metrics.height() * 1.3, metrics.height() * 1.8};
-}
-
 }  // namespace
 
 double scale_bar_length(double pixels_per_metre, double target_pixels) {
@@ -53,23 +40,6 @@ double scale_bar_length(double pixels_per_metre, double target_pixels) {
         }
     }
     return best;
-}
-
-QSizeF legend_size(const std::vector<LegendEntry>& entries, const QFont& font) {
-    if (entries.empty()) {
-        return {};
-    }
-    const QFontMetricsF metrics(font);
-    const LegendMetrics m = legend_metrics(font);
-    double text_width = 0.0;
-    double lines = 0.0;
-    for (const LegendEntry& entry : entries) {
-        for (const QString& line : entry.text.split(QLatin1Char('\n'))) {
-            text_width = std::max(text_width, metrics.horizontalAdvance(line));
-            lines += 1.0;
-        }
-    }
-    return {2.0 * m.pad + m.swatch + m.gap + text_width + 2.0, 2.0 * m.pad + m.row * lines};
 }
 
 ArenaPainter::ArenaPainter(QPainter& painter, const QTransform& world_to_widget,
@@ -117,6 +87,16 @@ void ArenaPainter::grid(const QRectF& visible_world, double spacing) {
                           QPointF(visible_world.right(), j * spacing));
     }
     painter_.setRenderHint(QPainter::Antialiasing, true);
+}
+
+void ArenaPainter::map(const QImage& image, const QTransform& image_to_world) {
+    if (image.isNull()) {
+        return;
+    }
+    painter_.setTransform(image_to_world * world_to_widget_);
+    // Nearest-neighbour: each cell a crisp square at any zoom.
+    painter_.setRenderHint(QPainter::SmoothPixmapTransform, false);
+    painter_.drawImage(QPointF(0.0, 0.0), image);
 }
 
 void ArenaPainter::intended_path(const QPainterPath& path) {
@@ -333,80 +313,6 @@ void ArenaPainter::label(const QPointF& anchor, const QString& text, const QColo
     painter_.drawText(box, Qt::AlignCenter, text);
 }
 
-void ArenaPainter::legend(const std::vector<LegendEntry>& entries, const QRectF& widget) {
-    if (entries.empty()) {
-        return;
-    }
-    use_widget();
-    painter_.setFont(style_.legend_font);
-    const LegendMetrics m = legend_metrics(style_.legend_font);
-    const QSizeF size = legend_size(entries, style_.legend_font);
-    const QRectF box(widget.right() - size.width() - 10.0, widget.top() + 10.0, size.width(),
-                     size.height());
-    painter_.setPen(pen(with_alpha(style_.colors.foreground, 70), 1.0));
-    painter_.setBrush(style_.colors.label_background);
-    painter_.drawRoundedRect(box, 4.0, 4.0);
-    double y = box.top() + m.pad;
-    for (const LegendEntry& entry : entries) {
-        const QStringList lines = entry.text.split(QLatin1Char('\n'));
-        const double middle = y + m.row / 2.0;
-        const QPointF left(box.left() + m.pad, middle);
-        const QPointF right(box.left() + m.pad + m.swatch, middle);
-        painter_.setBrush(Qt::NoBrush);
-        switch (entry.swatch) {
-            case LegendEntry::Swatch::Line:
-                painter_.setPen(pen(entry.color, 2.0));
-                painter_.drawLine(left, right);
-                break;
-            case LegendEntry::Swatch::Dashed:
-                painter_.setPen(pen(entry.color, 1.5, Qt::DashLine));
-                painter_.drawLine(left, right);
-                break;
-            case LegendEntry::Swatch::Ellipse:
-                painter_.setPen(pen(entry.color, 1.5));
-                painter_.setBrush(with_alpha(entry.color, 45));
-                painter_.drawEllipse(QPointF((left.x() + right.x()) / 2.0, middle), m.swatch / 2.0,
-                                     m.row * 0.32);
-                break;
-            case LegendEntry::Swatch::DashedEllipse:
-                painter_.setPen(pen(entry.color, 1.5, Qt::DashLine));
-                painter_.setBrush(with_alpha(entry.color, 30));
-                painter_.drawEllipse(QPointF((left.x() + right.x()) / 2.0, middle), m.swatch / 2.0,
-                                     m.row * 0.32);
-                break;
-            case LegendEntry::Swatch::Diamond: {
-                const QPointF c((left.x() + right.x()) / 2.0, middle);
-                const double h = m.row * 0.3;
-                QPolygonF diamond;
-                diamond << c + QPointF(0.0, -h) << c + QPointF(h, 0.0) << c + QPointF(0.0, h)
-                        << c + QPointF(-h, 0.0);
-                painter_.setPen(Qt::NoPen);
-                painter_.setBrush(entry.color);
-                painter_.drawPolygon(diamond);
-                break;
-            }
-            case LegendEntry::Swatch::Band: {
-                QPen band = pen(with_alpha(entry.color, 140), 8.0);
-                band.setCapStyle(Qt::FlatCap);
-                painter_.setPen(band);
-                painter_.drawLine(left, right);
-                QPen wall_pen = pen(style_.colors.foreground, 3.0);
-                wall_pen.setCapStyle(Qt::FlatCap);
-                painter_.setPen(wall_pen);
-                painter_.drawLine(left, right);
-                break;
-            }
-        }
-        painter_.setPen(style_.colors.foreground);
-        for (const QString& line : lines) {
-            painter_.drawText(QRectF(right.x() + m.gap, y, box.right() - right.x() - m.gap, m.row),
-                              Qt::AlignLeft | Qt::AlignVCenter, line);
-            y += m.row;
-        }
-    }
-    painter_.setFont(style_.font);
-}
-
 void ArenaPainter::scale_bar(double pixels_per_metre, const QRectF& widget) {
     const double s = style_.line_scale;
     const double metres = scale_bar_length(pixels_per_metre, 110.0 * s);
@@ -450,6 +356,20 @@ void ArenaPainter::corner_text(const QString& text, const QRectF& widget, Qt::Al
     painter_.setPen(Qt::NoPen);
     painter_.setBrush(style_.colors.label_background);
     painter_.drawRoundedRect(box, 3.0, 3.0);
+    painter_.setPen(style_.colors.foreground);
+    painter_.drawText(box, Qt::AlignCenter, text);
+}
+
+void ArenaPainter::banner(const QString& text, const QRectF& widget) {
+    use_widget();
+    const QFontMetricsF metrics(style_.font);
+    const QSizeF size(metrics.horizontalAdvance(text) + 16.0, metrics.height() + 10.0);
+    const QRectF box(
+        QPointF(widget.center().x() - size.width() / 2.0, widget.bottom() - 10.0 - size.height()),
+        size);
+    painter_.setPen(pen(style_.colors.truth, 1.5));
+    painter_.setBrush(style_.colors.label_background);
+    painter_.drawRoundedRect(box, 4.0, 4.0);
     painter_.setPen(style_.colors.foreground);
     painter_.drawText(box, Qt::AlignCenter, text);
 }

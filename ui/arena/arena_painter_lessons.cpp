@@ -1,5 +1,6 @@
 // The arena's layers for the further lessons: bearing-only beacons and their rays
-// (paper 002), and the second filter kind's estimate run beside the first (EKF vs UKF).
+// (paper 002), the second filter kind's estimate run beside the first (EKF vs UKF), and the
+// laser scans (paper 001).
 #include <QFontMetricsF>
 #include <algorithm>
 #include <cmath>
@@ -99,6 +100,18 @@ void ArenaPainter::shadow_estimate(const Pose2& pose, const CovarianceEllipse& e
         painter_.drawPolygon(ellipse_qpolygon(ellipse, 72));
     }
     heading_marker(pose, style_.colors.shadow);
+}
+
+void ArenaPainter::scan_points(const QPolygonF& points, const QColor& color, double diameter) {
+    if (points.isEmpty()) {
+        return;
+    }
+    // In widget pixels: dots of the same size at any zoom, one drawPoints call.
+    use_widget();
+    QPen dot(color, diameter * style_.line_scale, Qt::SolidLine, Qt::RoundCap);
+    dot.setCosmetic(true);
+    painter_.setPen(dot);
+    painter_.drawPoints(world_to_widget_.map(points));
 }
 
 }  // namespace legofeup::ui

@@ -9,6 +9,7 @@ void HistoryLayer::clear() {
     settings_.reset();
     drawn_ = {};
     trail_drawn_ = 0;
+    jumps_drawn_ = 0;
 }
 
 void HistoryLayer::redraw(const Settings& settings) {
@@ -23,6 +24,7 @@ void HistoryLayer::redraw(const Settings& settings) {
     settings_ = settings;
     drawn_ = {};
     trail_drawn_ = 0;
+    jumps_drawn_ = 0;
 }
 
 void HistoryLayer::paint(QPainter& painter, const Settings& settings, ArenaCache& cache,
@@ -32,7 +34,8 @@ void HistoryLayer::paint(QPainter& painter, const Settings& settings, ArenaCache
     const bool shown[] = {settings.show_odometry, settings.show_truth, true};
     const QColor colours[] = {style.colors.odometry, style.colors.truth, style.colors.estimate};
 
-    bool stale = !settings_ || !(*settings_ == settings) || cache.trail().size() < trail_drawn_;
+    bool stale = !settings_ || !(*settings_ == settings) || cache.trail().size() < trail_drawn_
+                 || cache.truth_before_jumps().size() < jumps_drawn_;
     for (int i = 0; i < 3 && !stale; ++i) {
         stale = drawn_[static_cast<std::size_t>(i)] > paths[i]->size();
     }
@@ -55,6 +58,14 @@ void HistoryLayer::paint(QPainter& painter, const Settings& settings, ArenaCache
             arena.trail(fresh);
         }
         trail_drawn_ = trail.size();
+        // The truth's finished paths (before each jump). A jump restarts the live truth path,
+        // which makes the picture stale, so each is drawn once into a fresh picture.
+        const std::vector<QPolygonF>& jumps = cache.truth_before_jumps();
+        for (; jumps_drawn_ < jumps.size(); ++jumps_drawn_) {
+            if (settings.show_truth) {
+                arena.polyline(jumps[jumps_drawn_], style.colors.truth, 1.0);
+            }
+        }
         for (int i = 0; i < 3; ++i) {
             const QPolygonF& points = paths[i]->points();
             qsizetype& drawn = drawn_[static_cast<std::size_t>(i)];

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "legofeup/core/angles.hpp"
+#include "legofeup/ui/arena/laser_layer.hpp"
 #include "legofeup/ui/run_history.hpp"
 
 namespace legofeup::ui {
@@ -94,6 +95,10 @@ void CovarianceView::showLatest() {
                          .arg(1000.0 * std::sqrt(std::max(p(0, 0), 0.0)), 0, 'f', 1)
                          .arg(1000.0 * std::sqrt(std::max(p(1, 1), 0.0)), 0, 'f', 1)
                          .arg(std::sqrt(std::max(p(2, 2), 0.0)) * 180.0 / kPi, 0, 'f', 2));
+    if (snapshot.localisation == Localisation::Laser) {
+        showLaserUpdate();
+        return;
+    }
     const WallUpdateReport& update = snapshot.update;
     if (update.status == StepStatus::Applied) {
         update_->setText(tr("t = %1 s: wall update, innovation (%2 m, %3°), NIS %4")
@@ -104,6 +109,31 @@ void CovarianceView::showLatest() {
     } else {
         update_->setText(
             tr("t = %1 s: prediction only (no wall update)").arg(snapshot.time, 0, 'f', 2));
+    }
+}
+
+void CovarianceView::showLaserUpdate() {
+    // Scans come every other period: the latest scan's update, at its own time.
+    const RunSample* sample = latest_scan_sample(history_);
+    if (sample == nullptr) {
+        update_->setText(tr("t = %1 s: prediction only (no scan yet)")
+                             .arg(history_.latest().snapshot.time, 0, 'f', 2));
+        return;
+    }
+    const double time = sample->snapshot.time;
+    const LaserUpdate& laser = sample->snapshot.laser;
+    if (laser.status == StepStatus::Applied) {
+        update_->setText(tr("t = %1 s: scan matched (%2 pts), V = (%3 cm, %4 cm, %5°), NIS %6")
+                             .arg(time, 0, 'f', 2)
+                             .arg(laser.icp.matched_points)
+                             .arg(100.0 * laser.innovation(0), 0, 'f', 1)
+                             .arg(100.0 * laser.innovation(1), 0, 'f', 1)
+                             .arg(laser.innovation(2) * 180.0 / kPi, 0, 'f', 2)
+                             .arg(laser.nis, 0, 'g', 3));
+    } else {
+        update_->setText(tr("t = %1 s: prediction only (%2)")
+                             .arg(time, 0, 'f', 2)
+                             .arg(laser_status_text(laser, history_.scene().laser)));
     }
 }
 

@@ -12,8 +12,12 @@ enum Uses : unsigned {
     kBeacons = 1U << static_cast<unsigned>(Localisation::Beacons),
     kGyroFusion = 1U << static_cast<unsigned>(Localisation::GyroFusion),
     kCompass = 1U << static_cast<unsigned>(Localisation::Compass),
+    kLaser = 1U << static_cast<unsigned>(Localisation::Laser),
     /// The EKF/UKF pose filter runs in every localisation but the 5-state fusion.
-    kPoseFilter = kWalls | kBeacons | kCompass,
+    kPoseFilter = kWalls | kBeacons | kCompass | kLaser,
+    /// The odometry's Q11, Q22 (paper eq. 13 of LegoFeup): the laser lesson has its own Q
+    /// (paper 001 eq. 13, laser.q_*).
+    kOdometryQ = kWalls | kBeacons | kCompass | kGyroFusion,
 };
 
 struct Rule {
@@ -24,6 +28,8 @@ struct Rule {
 
 // First match wins: the whole keys before their sections.
 constexpr std::array kRules = {
+    Rule{"filter.q11", kOdometryQ, "the other lessons (the laser lesson's Q is laser.q_*)"},
+    Rule{"filter.q22", kOdometryQ, "the other lessons (the laser lesson's Q is laser.q_*)"},
     Rule{"filter.r11", kWalls, "the wall lesson (IR sensors)"},
     Rule{"filter.r22", kWalls, "the wall lesson (IR sensors)"},
     Rule{"filter.wall_updates", kWalls, "the wall lesson"},
@@ -39,9 +45,11 @@ constexpr std::array kRules = {
     Rule{"beacons.", kBeacons, "the beacon lesson"},
     Rule{"gyro_fusion.", kGyroFusion, "the wheel-speed lesson (5-state EKF)"},
     Rule{"compass.", kCompass, "the compass lesson"},
+    Rule{"laser.", kLaser, "the laser lesson (scan matching in a map)"},
     // Not here, so always shown: the simulator's sensors (beacon_scanner, gyro,
-    // accelerometers, compass_sensor: a run may have them for its plots), the wheel-speed
-    // and velocity KFs (they run beside every localisation) and the calibration.
+    // accelerometers, compass_sensor, laser_scanner: a run may have them for its plots),
+    // the kidnapping (the simulator's), the wheel-speed and velocity KFs (they run beside
+    // every localisation) and the calibration.
 };
 
 const Rule* rule_for(const std::string& key) {

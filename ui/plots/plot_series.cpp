@@ -297,6 +297,61 @@ std::optional<double> ekf_cost(const RunSample& s) {
 std::optional<double> ukf_cost(const RunSample& s) {
     return cost_of(s, FilterKind::Ukf);
 }
+// ---- the laser lesson (paper 001): one point per scan the filter matched -------------
+
+/// The scan the filter processed this step (not one skipped for its beam count), if any.
+const LaserUpdate* scan_of(const RunSample& s) {
+    const LaserUpdate& laser = s.snapshot.laser;
+    return laser.scan_received && !laser.wrong_beam_count ? &laser : nullptr;
+}
+/// ICP's matched points of the scans whose match was used (`used`) or was a mismatch.
+std::optional<double> laser_matched_points(const RunSample& s, bool used) {
+    const LaserUpdate* laser = scan_of(s);
+    if (laser == nullptr || laser->matched != used) {
+        return std::nullopt;
+    }
+    return laser->icp.matched_points;
+}
+std::optional<double> laser_matched_used(const RunSample& s) {
+    return laser_matched_points(s, true);
+}
+std::optional<double> laser_matched_mismatch(const RunSample& s) {
+    return laser_matched_points(s, false);
+}
+std::optional<double> laser_consecutive_mismatches(const RunSample& s) {
+    const LaserUpdate* laser = scan_of(s);
+    if (laser == nullptr) {
+        return std::nullopt;
+    }
+    return laser->consecutive_mismatches;
+}
+/// Where P was inflated (§IV-B): a point at the mismatch count that triggered it.
+std::optional<double> laser_recoveries(const RunSample& s) {
+    const LaserUpdate* laser = scan_of(s);
+    if (laser == nullptr || !laser->recovery_triggered) {
+        return std::nullopt;
+    }
+    return laser->consecutive_mismatches;
+}
+/// V = Z − Ẑ (eq. 3) of the scans the update ran on; x and y in cm, θ in degrees.
+std::optional<double> laser_innovation(const RunSample& s, int i) {
+    const LaserUpdate* laser = scan_of(s);
+    if (laser == nullptr || laser->status == StepStatus::NotAttempted) {
+        return std::nullopt;
+    }
+    return i == kTheta ? radians_to_degrees(laser->innovation(kTheta))
+                       : 100.0 * laser->innovation(i);
+}
+std::optional<double> laser_innovation_x(const RunSample& s) {
+    return laser_innovation(s, kX);
+}
+std::optional<double> laser_innovation_y(const RunSample& s) {
+    return laser_innovation(s, kY);
+}
+std::optional<double> laser_innovation_theta(const RunSample& s) {
+    return laser_innovation(s, kTheta);
+}
+
 std::optional<double> no_single_value(const RunSample& /*s*/) {
     return std::nullopt;
 }
@@ -325,6 +380,12 @@ constexpr std::array<PlotDefinition, kPlotKindCount> kPlots{{
      "ekf_ukf_error", false, 0, true},
     {PlotKind::FilterCost, "Filter cost per step (smoothed, this machine)", "time (µs)",
      "filter_cost", false, 0, true},
+    {PlotKind::LaserMatches, "ICP: matched points per scan", "points", "laser_matches", false,
+     0, true},
+    {PlotKind::LaserMismatches, "Mismatches in a row, and the recovery", "mismatches",
+     "laser_mismatches", false, 0, true},
+    {PlotKind::LaserInnovation, "ICP pose observation: innovation V = Z − Ẑ", "V (cm, °)",
+     "laser_innovation", false, 0, true},
 }};
 
 using enum Series;
@@ -390,6 +451,20 @@ constexpr std::array<SeriesDefinition, kSeriesCount> kSeries{{
      kCostSmoothing},
     {UkfCost, PlotKind::FilterCost, "UKF", ukf_cost, kColourUkf, Line, UkfCost, nullptr,
      kCostSmoothing},
+    {LaserMatchedUsed, PlotKind::LaserMatches, "used", laser_matched_used, kColourApplied,
+     Points, LaserMatchedUsed},
+    {LaserMatchedMismatch, PlotKind::LaserMatches, "mismatch (prediction only)",
+     laser_matched_mismatch, kColourGated, Points, LaserMatchedMismatch},
+    {LaserConsecutiveMismatches, PlotKind::LaserMismatches, "mismatches in a row",
+     laser_consecutive_mismatches, kColourGated, Line, LaserConsecutiveMismatches},
+    {LaserRecoveries, PlotKind::LaserMismatches, "recovery: P inflated", laser_recoveries,
+     kColourNis, Points, LaserRecoveries},
+    {LaserInnovationX, PlotKind::LaserInnovation, "x (cm)", laser_innovation_x, kColourX, Line,
+     LaserInnovationX},
+    {LaserInnovationY, PlotKind::LaserInnovation, "y (cm)", laser_innovation_y, kColourY, Line,
+     LaserInnovationY},
+    {LaserInnovationTheta, PlotKind::LaserInnovation, "θ (°)", laser_innovation_theta,
+     kColourTheta, Line, LaserInnovationTheta},
 }};
 // clang-format on
 

@@ -32,6 +32,8 @@ std::vector<Tab> tabs() {
         {"Beacons && filters", {PlotKind::Bearings, PlotKind::ShadowError, PlotKind::FilterCost}},
         {"Heading && speed sensors",
          {PlotKind::HeadingSensors, PlotKind::TurnRate, PlotKind::WheelSpeedEstimates}},
+        {"Laser scan matching",
+         {PlotKind::LaserMatches, PlotKind::LaserMismatches, PlotKind::LaserInnovation}},
     };
 }
 
@@ -58,6 +60,17 @@ QString bound_label(int dof, const char* percent, double value) {
 
 QString ir_range_label(double range) {
     return QStringLiteral("trusted range %1 m").arg(range, 0, 'f', 2);
+}
+
+QString min_matched_label(int points) {
+    return QStringLiteral("min matched points %1: fewer is a mismatch").arg(points);
+}
+
+QString recovery_label(const LaserScene& laser) {
+    return laser.kidnap_recovery
+               ? QStringLiteral("recovery after %1").arg(laser.recovery_after_mismatches)
+               : QStringLiteral("recovery off (would be after %1)")
+                     .arg(laser.recovery_after_mismatches);
 }
 
 }  // namespace
@@ -162,6 +175,14 @@ QCustomPlot* PlotsPanel::buildPlot(PlotKind kind) {
         const double range = history_.scene().ir_max_range;
         addReferenceLine(kind, 0, range, ir_range_label(range));
     }
+    const LaserScene& laser = history_.scene().laser;
+    if (kind == PlotKind::LaserMatches) {
+        addReferenceLine(kind, 0, laser.min_matched_points,
+                         min_matched_label(laser.min_matched_points));
+    }
+    if (kind == PlotKind::LaserMismatches) {
+        addReferenceLine(kind, 0, laser.recovery_after_mismatches, recovery_label(laser));
+    }
 
     if (kind == PlotKind::PositionError || kind == PlotKind::HeadingError
         || kind == PlotKind::Nees) {
@@ -188,9 +209,11 @@ void PlotsPanel::addReferenceLine(PlotKind kind, int index, double value, const 
     reference.label->position->setAxisRect(plot->axisRect());
     reference.label->position->setTypeX(QCPItemPosition::ptAxisRectRatio);
     reference.label->position->setTypeY(QCPItemPosition::ptPlotCoords);
-    // Lower bounds labelled above their line, the others below: inside the range shown.
+    // Lower bounds labelled above their line, the others below: inside the range shown. The
+    // laser's min matched points is a lower bound too (the matches lie above it).
     const bool lower_bound =
-        plot_definition(kind).chi_square_dof > 0 && index == static_cast<int>(BoundSide::Lower);
+        (plot_definition(kind).chi_square_dof > 0 && index == static_cast<int>(BoundSide::Lower))
+        || kind == PlotKind::LaserMatches;
     reference.label->setPositionAlignment(Qt::AlignRight
                                           | (lower_bound ? Qt::AlignBottom : Qt::AlignTop));
     reference.label->setPadding(QMargins(3, 1, 3, 1));
@@ -222,6 +245,14 @@ QCPItemStraightLine* PlotsPanel::boundLine(PlotKind kind, BoundSide side) const 
     return references_[index_of(kind)][static_cast<std::size_t>(side)].line;
 }
 
+std::optional<double> PlotsPanel::referenceValue(PlotKind kind, int index) const {
+    if (index < 0 || index > 1) {
+        return std::nullopt;
+    }
+    const ReferenceLine& reference = references_[index_of(kind)][static_cast<std::size_t>(index)];
+    return reference.line != nullptr ? std::optional<double>(reference.value) : std::nullopt;
+}
+
 void PlotsPanel::historyRestarted() {
     epoch_ = history_.epoch();
     taken_ = 0;
@@ -232,8 +263,18 @@ void PlotsPanel::historyRestarted() {
     showNoTruth(false);
     const double range = history_.scene().ir_max_range;
     moveReferenceLine(PlotKind::IrDistances, 0, range, ir_range_label(range));
+    moveLaserThresholds();
     updateAxes();
     requestReplots();
+}
+
+void PlotsPanel::moveLaserThresholds() {
+    // From the scene, which follows the thresholds a run is retuned with while it goes.
+    const LaserScene& laser = history_.scene().laser;
+    moveReferenceLine(PlotKind::LaserMatches, 0, laser.min_matched_points,
+                      min_matched_label(laser.min_matched_points));
+    moveReferenceLine(PlotKind::LaserMismatches, 0, laser.recovery_after_mismatches,
+                      recovery_label(laser));
 }
 
 void PlotsPanel::clearGraphs() {
@@ -308,6 +349,7 @@ void PlotsPanel::samplesAppended(int first, int count) {
     last_time_ = samples[end - 1].snapshot.time;
     taken_ = end;
     showNoTruth(!samples[end - 1].truth.has_value());
+    moveLaserThresholds();
     updateAxes();
     requestReplots();
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "legofeup/comms/link_error.hpp"
 #include "legofeup/lessons/link_run.hpp"
 #include "legofeup/lessons/udp_run.hpp"  // noise_settings_of
 #include "legofeup/ui/session/run_samples.hpp"
@@ -62,6 +63,24 @@ void LiveRun::set_manual_command(const VelocityCommand& command) {
 void LiveRun::set_paused(bool paused) {
     const std::lock_guard lock(mutex_);
     requests_.paused = paused;
+}
+
+void LiveRun::teleport(const Pose2& pose) {
+    const std::lock_guard lock(mutex_);
+    requests_.teleport = pose;
+}
+
+std::vector<std::string> LiveRun::take_notes() {
+    const std::lock_guard lock(mutex_);
+    return std::exchange(notes_, {});
+}
+
+void LiveRun::note(std::string text) {
+    {
+        const std::lock_guard lock(mutex_);
+        notes_.push_back(std::move(text));
+    }
+    notify_();
 }
 
 std::vector<RunSample> LiveRun::take_samples() {
@@ -131,6 +150,22 @@ void LiveRun::apply(Requests requests, LegoFeupLoop& loop, lessons::RobotConnect
     if (requests.paused) {
         connection.set_paused(*requests.paused);
         set_phase(*requests.paused ? RunPhase::Paused : RunPhase::Running);
+    }
+    if (requests.teleport) {
+        // Only a simulator server can lift its robot: through its control channel, like the
+        // noise and the pause. (lessons::RobotConnection has no teleport of its own.)
+        auto* simulator = dynamic_cast<lessons::UdpRobotConnection*>(&connection);
+        if (simulator == nullptr) {
+            note("The robot was not kidnapped: " + connection.describe() + " is not a simulator");
+            return;
+        }
+        try {
+            simulator->control().teleport(*requests.teleport);
+        } catch (const comms::LinkError& error) {
+            // The server refused the pose (inside a wall, outside the world) or did not answer:
+            // the run goes on where the robot is.
+            note(std::string("The robot was not kidnapped: ") + error.what());
+        }
     }
 }
 

@@ -6,6 +6,17 @@
 
 namespace legofeup::ui {
 
+namespace {
+
+/// Whether two maps hold the same cells at the same place (a map loaded twice is one map).
+bool same_map(const OccupancyGrid& a, const OccupancyGrid& b) {
+    return a.width() == b.width() && a.height() == b.height() && a.resolution() == b.resolution()
+           && a.origin().x == b.origin().x && a.origin().y == b.origin().y
+           && a.origin().theta == b.origin().theta && a.cells() == b.cells();
+}
+
+}  // namespace
+
 RunSample make_run_sample(const LoopSnapshot& snapshot, const std::optional<GroundTruth>& truth) {
     RunSample sample{snapshot, truth, std::numeric_limits<double>::quiet_NaN()};
     if (truth) {
@@ -29,6 +40,23 @@ ArenaScene scene_of(const lessons::ResolvedRun& run) {
     // the wall lesson keeps the paper's look.
     if (run.loop.lesson.localisation == Localisation::Beacons) {
         scene.beacons = run.world.beacons;
+    }
+    scene.map = run.world.map;
+    if (run.loop.lesson.localisation == Localisation::Laser) {
+        const LaserTuning& laser = run.loop.lesson.laser;
+        scene.laser.active = true;
+        scene.laser.geometry = laser.geometry;
+        scene.laser.mount = laser.mount;
+        scene.laser.true_geometry = run.robot.laser_scanner.geometry;
+        scene.laser.true_mount = run.robot.laser_scanner.mount;
+        scene.laser.min_matched_points = laser.min_matched_points;
+        scene.laser.recovery_after_mismatches = laser.recovery_after_mismatches;
+        scene.laser.kidnap_recovery = laser.kidnap_recovery;
+        scene.laser.recovery_covariance_factor = laser.recovery_covariance_factor;
+        if (run.loop.map && run.loop.map != run.world.map
+            && (!run.world.map || !same_map(*run.loop.map, *run.world.map))) {
+            scene.filter_map = run.loop.map;
+        }
     }
     return scene;
 }

@@ -5,6 +5,7 @@
 #include <QFileInfo>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <sstream>
 #include <string_view>
 
@@ -65,7 +66,7 @@ bool applies_live(const lessons::Setting& setting) {
     // The further lessons' estimators: the loop takes them at the next step (a new
     // localisation continues from the current belief); their simulated sensors are the
     // simulator's and wait for the next start.
-    if (starts_with_any(key, {"localisation.", "beacons.", "gyro_fusion.", "compass.",
+    if (starts_with_any(key, {"localisation.", "beacons.", "gyro_fusion.", "compass.", "laser.",
                               "wheel_speed_kf.", "velocity_kf.", "calibration."})) {
         return true;
     }
@@ -125,6 +126,7 @@ QStringList Session::setConfig(const lessons::RunConfig& config) {
     }
     if (run_ && running()) {
         run_->reconfigure(forThisRobot(resolved_));
+        history_.update_scene(scene_of(resolved_));  // a live threshold (min matched points)
     } else {
         history_.restart(scene_of(resolved_));
         emit historyRestarted();
@@ -415,6 +417,32 @@ void Session::setPaused(bool paused) {
     }
 }
 
+QString Session::teleportRefusal() const {
+    if (link_.kind == LinkKind::Nxt) {
+        return link_.emulated ? tr(
+                   "Kidnapping moves a simulated robot: the emulated brick has "
+                   "no control channel to move its robot by")
+                              : tr(
+                                  "Kidnapping moves a simulated robot: nobody can lift a real "
+                                  "NXT from here");
+    }
+    if (!run_ || !running()) {
+        return tr("Start a run first: the robot is kidnapped from a running simulator");
+    }
+    return {};
+}
+
+QString Session::teleport(const Pose2& pose) {
+    if (QString why = teleportRefusal(); !why.isEmpty()) {
+        return why;
+    }
+    if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
+        return tr("The pose to put the robot at is not a number");
+    }
+    run_->teleport(pose);  // the simulator's control channel; the filter is not told
+    return {};
+}
+
 void Session::setManualDriving(bool manual) {
     if (manual == manual_) {
         return;
@@ -460,6 +488,9 @@ void Session::drain() {
     }
     std::vector<RunSample> batch = run_->take_samples();
     const LiveRunStatus status = run_->status();
+    for (const std::string& note : run_->take_notes()) {
+        emit problem(QString::fromStdString(note));
+    }
     if (!batch.empty()) {
         if (trace_writer_) {
             for (const RunSample& sample : batch) {

@@ -32,6 +32,7 @@
 #include "legofeup/ui/window/appearance.hpp"
 #include "legofeup/ui/window/file_actions.hpp"
 #include "legofeup/ui/window/keyboard_driver.hpp"
+#include "legofeup/ui/window/kidnap_action.hpp"
 #include "legofeup/ui/window/run_toolbar.hpp"
 
 namespace legofeup::ui {
@@ -141,10 +142,13 @@ void MainWindow::buildDocks() {
 
     keyboard_ = new KeyboardDriver(session_, this);
     qApp->installEventFilter(keyboard_);
+    kidnap_ = new KidnapAction(session_, *arena_, this);
+    toolbar_->addRunAction(kidnap_->action());
     files_ = new FileActions(session_, *plots_, this);
     lesson_files_ = new LessonActions(*lesson_, this);
     const auto show_note = [this](const QString& note) { statusBar()->showMessage(note, 10000); };
     connect(files_, &FileActions::done, this, show_note);
+    connect(kidnap_, &KidnapAction::done, this, show_note);
     connect(lesson_files_, &LessonActions::done, this, show_note);
     connect(lesson_, &LessonPanel::note, this, show_note);
     connect(lesson_, &LessonPanel::openLessonRequested, lesson_files_, &LessonActions::openLesson);
@@ -200,6 +204,7 @@ void MainWindow::buildMenus() {
     run->addAction(toolbar_->pauseAction());
     run->addAction(toolbar_->stopAction());
     run->addAction(toolbar_->resetAction());
+    run->addAction(kidnap_->action());
     run->addSeparator();
     reconnect_ = run->addAction(tr("Re&connect"));
     reconnect_->setObjectName(QStringLiteral("reconnectAction"));

@@ -109,6 +109,12 @@ RunToolBar::RunToolBar(Session& session, QWidget* parent)
     linkEdited();
 }
 
+void RunToolBar::addRunAction(QAction* action) {
+    const QList<QAction*> all = actions();
+    const qsizetype reset = all.indexOf(reset_);
+    insertAction(reset + 1 < all.size() ? all[reset + 1] : nullptr, action);
+}
+
 void RunToolBar::linkEdited() {
     LinkChoice choice = session_.linkChoice();  // keeps the NXT's fields
     choice.kind = static_cast<LinkKind>(link_->currentIndex());

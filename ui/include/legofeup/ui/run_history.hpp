@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -16,7 +17,9 @@
 #include "legofeup/core/follow_path.hpp"
 #include "legofeup/core/ground_truth.hpp"
 #include "legofeup/core/ir_geometry.hpp"
+#include "legofeup/core/laser_scan.hpp"
 #include "legofeup/core/loop_snapshot.hpp"
+#include "legofeup/core/occupancy_grid.hpp"
 #include "legofeup/core/walls.hpp"
 
 namespace legofeup::ui {
@@ -30,6 +33,20 @@ struct RunSample {
     double nees = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// The laser lesson's (paper 001) scanner and thresholds, for the arena's scan layer and the
+/// plots' reference lines.
+struct LaserScene {
+    bool active = false;                ///< the run localises with the laser (Localisation::Laser)
+    ScanGeometry geometry;              ///< the beams as the filter believes them
+    Pose2 mount;                        ///< the scanner on the robot as the filter believes it
+    ScanGeometry true_geometry;         ///< the simulated scanner's beams
+    Pose2 true_mount;                   ///< the simulated scanner on the robot
+    int min_matched_points = 0;         ///< fewer matched points is a mismatch (§III-B)
+    int recovery_after_mismatches = 0;  ///< consecutive mismatches before P is inflated
+    bool kidnap_recovery = false;       ///< the recovery is on
+    double recovery_covariance_factor = 1.0;  ///< P is multiplied by it
+};
+
 /// What stays fixed during a run: the world and the path drawn behind the robot.
 struct ArenaScene {
     std::vector<Wall> walls;        ///< the walls of the world (and of the filter's map)
@@ -39,6 +56,11 @@ struct ArenaScene {
     double control_period = 0.05;   ///< s
     /// The world's bearing-only beacons (paper 002) when the run localises with them.
     BeaconMap beacons;
+    /// The world's occupancy-grid map (paper 001), drawn under everything; null: none.
+    std::shared_ptr<const OccupancyGrid> map;
+    /// The laser filter's map when it is not the world's (an outdated map); null otherwise.
+    std::shared_ptr<const OccupancyGrid> filter_map;
+    LaserScene laser;
 };
 
 class RunHistory {
@@ -49,6 +71,9 @@ class RunHistory {
         samples_.clear();
         ++epoch_;
     }
+    /// Takes the scene of a run reconfigured while it goes (its thresholds may change);
+    /// keeps the samples and the epoch.
+    void update_scene(ArenaScene scene) { scene_ = std::move(scene); }
     void append(std::vector<RunSample>&& batch) {
         samples_.insert(samples_.end(), std::make_move_iterator(batch.begin()),
                         std::make_move_iterator(batch.end()));

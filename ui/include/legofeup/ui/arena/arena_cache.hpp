@@ -52,6 +52,9 @@ class ArenaCache {
     void set_confidence(const RunHistory& history, EllipseConfidence level);
 
     ThinnedPolyline& truth_path() { return truth_; }
+    /// The truth's path before each jump (a kidnapping: the simulator's teleport count went
+    /// up), one finished polyline each, so the path is never drawn across the jump.
+    const std::vector<QPolygonF>& truth_before_jumps() const { return truth_before_jumps_; }
     ThinnedPolyline& estimate_path() { return estimate_; }
     ThinnedPolyline& odometry_path() { return odometry_; }
     const ThinnedPolyline& estimate_path() const { return estimate_; }
@@ -60,8 +63,8 @@ class ArenaCache {
     const QPainterPath& trail_path() const { return trail_path_; }
     /// The intended path (lines and arcs) in world coordinates.
     const QPainterPath& intended_path() const { return intended_; }
-    /// What "fit the arena" shows: the walls and the intended path, or, without either,
-    /// every estimate seen.
+    /// What "fit the arena" shows: the walls, the map and the intended path, or, without
+    /// any, every estimate seen.
     QRectF world_bounds() const {
         return scene_bounds_.empty() ? data_bounds_.rect() : scene_bounds_.rect();
     }
@@ -76,6 +79,8 @@ class ArenaCache {
     ThinnedPolyline truth_;
     ThinnedPolyline estimate_;
     ThinnedPolyline odometry_;
+    std::vector<QPolygonF> truth_before_jumps_;
+    std::uint32_t truth_teleports_ = 0;  ///< the simulator's teleport count at the last truth
     std::vector<TrailEllipse> trail_;
     QPainterPath trail_path_;
     double next_trail_time_ = 0.0;

@@ -11,21 +11,26 @@
 namespace legofeup::ui {
 
 struct ArenaColors {
-    bool dark = false;    ///< the background is dark
-    QColor background;    ///< the canvas (palette Base)
-    QColor foreground;    ///< walls, text (the palette's text colour that contrasts most)
-    QColor grid;          ///< faint 0.5 m grid
-    QColor path;          ///< the intended path
-    QColor truth;         ///< the real robot and its path
-    QColor estimate;      ///< the filter's estimate and its path
-    QColor odometry;      ///< odometry-only dead reckoning
-    QColor ellipse;       ///< covariance ellipses
-    QColor trail;         ///< past ellipses: the ellipse colour faded into the background
-    QColor associated;    ///< IR rays used by an update, and the wall they were matched to
-    QColor rejected;      ///< IR rays measured but not used
-    QColor out_of_range;  ///< IR rays that saw nothing within range
-    QColor beacon;        ///< bearing-only beacons (paper 002) and their ids
-    QColor shadow;        ///< the other filter kind's estimate run beside it (EKF vs UKF)
+    bool dark = false;     ///< the background is dark
+    QColor background;     ///< the canvas (palette Base)
+    QColor foreground;     ///< walls, text (the palette's text colour that contrasts most)
+    QColor grid;           ///< faint 0.5 m grid
+    QColor path;           ///< the intended path
+    QColor truth;          ///< the real robot and its path
+    QColor estimate;       ///< the filter's estimate and its path
+    QColor odometry;       ///< odometry-only dead reckoning
+    QColor ellipse;        ///< covariance ellipses
+    QColor trail;          ///< past ellipses: the ellipse colour faded into the background
+    QColor associated;     ///< IR rays used by an update, and the wall they were matched to
+    QColor rejected;       ///< IR rays measured but not used
+    QColor out_of_range;   ///< IR rays that saw nothing within range
+    QColor beacon;         ///< bearing-only beacons (paper 002) and their ids
+    QColor shadow;         ///< the other filter kind's estimate run beside it (EKF vs UKF)
+    QColor map_occupied;   ///< an occupancy grid's occupied cells (paper 001)
+    QColor map_unknown;    ///< its unknown cells (free ones show the floor)
+    QColor filter_map;     ///< the laser filter's own map when it is not the world's
+    QColor expected_scan;  ///< the scan the filter expected (ray-cast in its map)
+    QColor truth_scan;     ///< the measured scan placed at the true pose
     QColor label_background;
 };
 

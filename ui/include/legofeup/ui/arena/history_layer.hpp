@@ -57,6 +57,7 @@ class HistoryLayer {
     std::optional<Settings> settings_;
     std::array<qsizetype, 3> drawn_{};  ///< index of the last point of each path in the picture
     std::size_t trail_drawn_ = 0;       ///< trail ellipses in the picture
+    std::size_t jumps_drawn_ = 0;       ///< the truth's paths before its jumps in the picture
 };
 
 }  // namespace legofeup::ui

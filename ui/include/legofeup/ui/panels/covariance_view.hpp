@@ -30,6 +30,8 @@ class CovarianceView : public QWidget {
 
   private:
     void showLatest();
+    /// The laser lesson's line: the latest scan's match and its innovation, or why not.
+    void showLaserUpdate();
     void useMonospaceFont();
 
     const RunHistory& history_;

@@ -1,7 +1,8 @@
 #pragma once
 // Which settings matter to the lesson being run: the configuration panel greys the others
 // (the IR sensors and the walls' association in the beacon lesson, the beacons' noise in
-// the wall lesson, EKF/UKF in the 5-state fusion that is an EKF only). Qt-free.
+// the wall lesson, EKF/UKF in the 5-state fusion that is an EKF only, the scan matching
+// outside the laser lesson and the odometry's Q11, Q22 in it). Qt-free.
 
 #include <string>
 

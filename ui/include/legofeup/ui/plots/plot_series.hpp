@@ -27,8 +27,12 @@ enum class PlotKind : int {
     WheelSpeedEstimates,  ///< wheel surface speeds: truth, per-wheel KF, differentiated encoders
     ShadowError,          ///< position error of the EKF and of the UKF run side by side
     FilterCost,           ///< wall-clock µs per step of each filter, smoothed
+    // The laser lesson's (paper 001): one point per scan.
+    LaserMatches,     ///< ICP matched points, used or a mismatch, with min_matched_points
+    LaserMismatches,  ///< consecutive mismatches with the recovery threshold; recoveries
+    LaserInnovation,  ///< V = Z − Ẑ of the ICP pose observation: x, y (cm), θ (°)
 };
-inline constexpr int kPlotKindCount = 13;
+inline constexpr int kPlotKindCount = 16;
 
 /// Every drawn series. The order is the drawing order within a plot: bands first, so the
 /// lines sit on top of them.
@@ -72,8 +76,15 @@ enum class Series : int {
     UkfPositionError,
     EkfCost,
     UkfCost,
+    LaserMatchedUsed,
+    LaserMatchedMismatch,
+    LaserConsecutiveMismatches,
+    LaserRecoveries,
+    LaserInnovationX,
+    LaserInnovationY,
+    LaserInnovationTheta,
 };
-inline constexpr int kSeriesCount = 39;
+inline constexpr int kSeriesCount = 46;
 
 /// At most this many points of one series per sample (one per beacon sighting).
 inline constexpr int kMaxPointsPerSample = kMaxBeaconSightings;

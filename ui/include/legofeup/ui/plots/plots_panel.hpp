@@ -17,6 +17,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 
 #include "legofeup/ui/frame_stats.hpp"
 #include "legofeup/ui/plots/plot_export.hpp"
@@ -56,6 +57,10 @@ class PlotsPanel : public QWidget {
     bool plotShown(PlotKind kind) const;
     /// The χ² 95 % bound lines of the Nis and Nees plots (nullptr for the other plots).
     QCPItemStraightLine* boundLine(PlotKind kind, BoundSide side) const;
+    /// The height of reference line `index` (0 or 1) of the plot of `kind`: the χ² bounds,
+    /// the IR's trusted range, the laser's min matched points and recovery threshold;
+    /// nullopt when the plot has no such line.
+    std::optional<double> referenceValue(PlotKind kind, int index) const;
     /// Whether the plots that need the truth (errors, NEES) say the run has none (a real
     /// robot): its latest sample came without truth.
     bool showsNoTruth() const { return no_truth_shown_; }
@@ -97,6 +102,8 @@ class PlotsPanel : public QWidget {
     QCustomPlot* buildPlot(PlotKind kind);
     void addReferenceLine(PlotKind kind, int index, double value, const QString& label);
     void moveReferenceLine(PlotKind kind, int index, double value, const QString& label);
+    /// The laser plots' min_matched_points and recovery lines, from the history's scene.
+    void moveLaserThresholds();
     void clearGraphs();
     void updateAxes();
     void updateAxes(PlotKind kind, double lower, double upper);
@@ -127,7 +134,8 @@ class PlotsPanel : public QWidget {
     /// Each graph's pen and fill from the look, used while few enough points are in view.
     std::array<QPen, kSeriesCount> pens_{};
     std::array<QBrush, kSeriesCount> brushes_{};
-    /// Horizontal reference lines with their labels: the χ² bounds, the IR trusted range.
+    /// Horizontal reference lines with their labels: the χ² bounds, the IR trusted range,
+    /// the laser's min_matched_points and recovery threshold.
     struct ReferenceLine {
         QCPItemStraightLine* line = nullptr;
         QCPItemText* label = nullptr;

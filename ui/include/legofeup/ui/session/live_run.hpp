@@ -78,9 +78,14 @@ class LiveRun {
     void set_manual_driving(bool manual);
     void set_manual_command(const VelocityCommand& command);
     void set_paused(bool paused);
+    /// Kidnaps a simulated robot (a simulator server's control channel: UDP); a robot that
+    /// cannot be moved so (an NXT) says so in a note. The loop is not told.
+    void teleport(const Pose2& pose);
 
     /// The samples produced since the last call, oldest first.
     std::vector<RunSample> take_samples();
+    /// What the user should read since the last call (a teleport the simulator refused).
+    std::vector<std::string> take_notes();
     LiveRunStatus status() const;
     /// Asks the worker to stop without waiting for it: it stops the motors, releases the
     /// robot and reports RunPhase::Stopped (the destructor then joins at once).
@@ -92,6 +97,7 @@ class LiveRun {
         std::optional<bool> manual;
         std::optional<VelocityCommand> command;
         std::optional<bool> paused;
+        std::optional<Pose2> teleport;
     };
 
     void work(const std::stop_token& stop);
@@ -101,6 +107,7 @@ class LiveRun {
     /// Throws if the connection reports its link failed (an NXT that stopped answering).
     static void check_link(const lessons::RobotConnection& connection);
     void set_phase(RunPhase phase, std::string message = {});
+    void note(std::string text);
     bool is_over(const LoopSnapshot& snapshot) const;
 
     // Owned by the worker thread once it runs.
@@ -112,6 +119,7 @@ class LiveRun {
     mutable std::mutex mutex_;  // guards everything below
     Requests requests_;
     std::vector<RunSample> pending_;
+    std::vector<std::string> notes_;
     LiveRunStatus status_;
 
     std::jthread worker_;  // last: starts once everything above exists

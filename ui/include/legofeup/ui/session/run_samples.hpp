@@ -12,7 +12,7 @@ namespace legofeup::ui {
 /// The sample of one step, with its NEES computed when the truth is known.
 RunSample make_run_sample(const LoopSnapshot& snapshot, const std::optional<GroundTruth>& truth);
 
-/// The walls, the intended path and the IR mounting of a run, for the arena view.
+/// The walls, map, intended path, IR mounting and laser scanner of a run, for the views.
 ArenaScene scene_of(const lessons::ResolvedRun& run);
 
 /// Collects every step of a run as samples (tests, benchmarks and recorded runs).

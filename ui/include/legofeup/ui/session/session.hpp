@@ -85,6 +85,15 @@ class Session : public QObject {
     /// The latest NXT link's health (nullopt for a simulator, or before an NXT run).
     const std::optional<comms::nxt::LinkQuality>& nxtQuality() const { return status_.nxt; }
 
+    /// Why the robot cannot be kidnapped now ("" when it can): a real or emulated NXT has no
+    /// simulator to move it, and there must be a run going.
+    QString teleportRefusal() const;
+    /// Kidnaps the simulated robot: the simulator puts it at `pose` (world frame, at rest)
+    /// through its control channel, on the worker thread; the filter is not told (paper 001
+    /// §IV-B). Returns why it was refused, or "" when asked (a pose the simulator refuses,
+    /// inside a wall, comes back through problem()).
+    QString teleport(const Pose2& pose);
+
     /// Writes the configuration as TOML (the CLI reads the same file). Returns an error or "".
     QString saveConfig(const QString& path) const;
     /// Reads a TOML configuration (over the defaults). Returns the problems (file:line).

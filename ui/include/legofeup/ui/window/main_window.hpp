@@ -23,6 +23,7 @@ class LessonActions;
 class LessonPanel;
 class RefilterDialog;
 class KeyboardDriver;
+class KidnapAction;
 class PlotsPanel;
 class RunToolBar;
 class Session;
@@ -42,6 +43,8 @@ class MainWindow : public QMainWindow {
     CovarianceView& covarianceView() const { return *covariance_; }
     RunToolBar& runToolBar() const { return *toolbar_; }
     KeyboardDriver& keyboard() const { return *keyboard_; }
+    /// Run ▸ Kidnap robot… (also on the toolbar).
+    KidnapAction& kidnap() const { return *kidnap_; }
     FileActions& fileActions() const { return *files_; }
     RobotStatusView& robotStatus() const { return *robot_; }
     /// Run ▸ Reconnect: enabled after a failed run.
@@ -82,6 +85,7 @@ class MainWindow : public QMainWindow {
     CovarianceView* covariance_ = nullptr;
     RunToolBar* toolbar_ = nullptr;
     KeyboardDriver* keyboard_ = nullptr;
+    KidnapAction* kidnap_ = nullptr;
     FileActions* files_ = nullptr;
     RobotStatusView* robot_ = nullptr;
     QLabel* status_ = nullptr;

@@ -35,6 +35,8 @@ class RunToolBar : public QToolBar {
     QToolButton* nxtButton() const { return nxt_; }
     /// "Connect to an NXT…": opens the connect dialog.
     QAction* connectAction() const { return connect_; }
+    /// Puts `action` with the run's controls, after Reset (Kidnap robot…).
+    void addRunAction(QAction* action);
 
   public slots:
     /// Opens the connect dialog (window-modal, not blocking); accepting it makes the NXT the

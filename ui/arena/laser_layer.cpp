@@ -1,0 +1,89 @@
+#include "legofeup/ui/arena/laser_layer.hpp"
+
+#include <QCoreApplication>
+#include <algorithm>
+#include <vector>
+
+#include "arena_drawing.hpp"
+
+namespace legofeup::ui {
+
+namespace {
+
+using arena_drawing::to_point;
+
+/// The scan's points in the world, the scanner at `scanner_pose` (world frame).
+QPolygonF world_points(const LaserScan& scan, const ScanGeometry& geometry,
+                       const Pose2& scanner_pose) {
+    thread_local std::vector<Vector2> points;
+    scan_to_points(scan, geometry, scanner_pose, points);
+    QPolygonF polygon;
+    polygon.reserve(static_cast<qsizetype>(points.size()));
+    for (const Vector2& p : points) {
+        polygon.append(to_point(p));
+    }
+    return polygon;
+}
+
+QString tr(const char* text) {
+    return QCoreApplication::translate("ArenaView", text);
+}
+
+}  // namespace
+
+const RunSample* latest_scan_sample(const RunHistory& history, std::size_t look_back) {
+    const std::vector<RunSample>& samples = history.samples();
+    const std::size_t stop = samples.size() > look_back ? samples.size() - look_back : 0;
+    for (std::size_t i = samples.size(); i > stop; --i) {
+        const LaserUpdate& laser = samples[i - 1].snapshot.laser;
+        if (laser.scan_received && !laser.wrong_beam_count) {
+            return &samples[i - 1];
+        }
+    }
+    return nullptr;
+}
+
+LaserScanPoints laser_scan_points(const RunSample& sample, const LaserScene& scene) {
+    LaserScanPoints points;
+    const LoopSnapshot& snapshot = sample.snapshot;
+    if (!snapshot.laser.scan_received) {
+        return points;
+    }
+    // Measured: where the filter believes the scanner is now, X̂ ⊕ mount.
+    const Pose2 estimated_scanner = compose(to_pose(snapshot.estimate), scene.mount);
+    points.measured = world_points(snapshot.frame.laser, scene.geometry, estimated_scanner);
+    // Expected: cast from the predicted scanner pose (before this scan's update).
+    points.expected =
+        world_points(snapshot.laser.expected, scene.geometry, snapshot.laser.scanner_pose);
+    if (sample.truth) {
+        const Pose2 true_scanner = compose(sample.truth->pose, scene.true_mount);
+        points.measured_at_truth =
+            world_points(snapshot.frame.laser, scene.true_geometry, true_scanner);
+    }
+    points.matched = snapshot.laser.matched;
+    return points;
+}
+
+QString laser_status_text(const LaserUpdate& update, const LaserScene& scene) {
+    if (!update.scan_received) {
+        return {};
+    }
+    if (update.wrong_beam_count) {
+        return tr("scan skipped: %1 beams expected").arg(scene.geometry.beam_count);
+    }
+    if (update.recovery_active) {
+        return tr("recovery: P×%1 · mismatch ×%2")
+            .arg(scene.recovery_covariance_factor, 0, 'g', 3)
+            .arg(update.consecutive_mismatches);
+    }
+    if (update.matched) {
+        return tr("ICP matched %1 pts").arg(update.icp.matched_points);
+    }
+    return update.icp.converged
+               ? tr("mismatch ×%1 · %2 pts")
+                     .arg(update.consecutive_mismatches)
+                     .arg(update.icp.matched_points)
+               : tr("mismatch ×%1 · not converged").arg(update.consecutive_mismatches);
+}
+
+}  // namespace legofeup::ui

@@ -1,0 +1,34 @@
+#pragma once
+// What the arena draws of the laser lesson (paper 001) at the latest scan, in world
+// coordinates: the measured scan placed where the filter believes the scanner is
+// (X̂ ⊕ mount, so a wrong estimate shows as a scan that does not lie on the map), the scan
+// the filter expected there (ray-cast in its map at the predicted scanner pose, Fig. 2), and
+// the measured scan at the true scanner pose (it lies on the map's walls up to the noise).
+
+#include <QPolygonF>
+#include <QString>
+#include <cstddef>
+
+#include "legofeup/ui/run_history.hpp"
+
+namespace legofeup::ui {
+
+struct LaserScanPoints {
+    QPolygonF measured;           ///< at the estimate ⊕ the filter's mount
+    QPolygonF expected;           ///< ray-cast at LaserUpdate::scanner_pose
+    QPolygonF measured_at_truth;  ///< at the truth ⊕ the simulated mount; empty without truth
+    bool matched = false;         ///< the ICP match was used (§III-B)
+};
+
+/// The latest sample whose frame carried a scan the filter processed, among the last
+/// `look_back` samples (a scan comes every other control period); nullptr when none.
+const RunSample* latest_scan_sample(const RunHistory& history, std::size_t look_back = 20);
+
+/// The scan of `sample` (one with LaserUpdate::scan_received) as world points.
+LaserScanPoints laser_scan_points(const RunSample& sample, const LaserScene& scene);
+
+/// The scan matching's state in a few words: "ICP matched 512 pts", "mismatch ×37 · 41 pts",
+/// "recovery: P×10 · mismatch ×104"; empty when the sample has no scan.
+QString laser_status_text(const LaserUpdate& update, const LaserScene& scene);
+
+}  // namespace legofeup::ui
