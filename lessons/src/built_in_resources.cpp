@@ -3,6 +3,7 @@
 #include <array>
 #include <utility>
 
+#include "beacon_field_world_resource.hpp"
 #include "office_map_image_resource.hpp"
 #include "office_map_resource.hpp"
 #include "office_world_resource.hpp"
@@ -14,9 +15,10 @@ namespace legofeup::lessons {
 
 std::optional<std::string_view> built_in_resource(std::string_view path) {
     // The explicit list (lessons/CMakeLists.txt embeds each file).
-    const std::array<std::pair<std::string_view, std::string_view>, 6> files{{
+    const std::array<std::pair<std::string_view, std::string_view>, 7> files{{
         {"worlds/standard_arena.toml", resources::kStandardArenaWorld},
         {"worlds/office.toml", resources::kOfficeWorld},
+        {"worlds/beacon_field.toml", resources::kBeaconFieldWorld},
         {"maps/standard_arena.yaml", resources::kStandardArenaMap},
         {"maps/standard_arena.pgm", resources::kStandardArenaMapImage},
         {"maps/office.yaml", resources::kOfficeMap},

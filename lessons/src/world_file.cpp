@@ -387,7 +387,7 @@ sim::WorldSpec load_world_file(const std::filesystem::path& path) {
 }
 
 const std::vector<std::string>& built_in_world_names() {
-    static const std::vector<std::string> names = {"standard_arena", "office"};
+    static const std::vector<std::string> names = {"standard_arena", "office", "beacon_field"};
     return names;
 }
 

@@ -129,7 +129,7 @@ TEST(WorldMap, MapTablesAndStartPosesAreChecked) {
 
 TEST(WorldMap, TheOfficeIsABuiltInWorldWithItsMap) {
     const std::vector<std::string>& names = built_in_world_names();
-    EXPECT_EQ(names, (std::vector<std::string>{"standard_arena", "office"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"standard_arena", "office", "beacon_field"}));
     const sim::WorldSpec* office = find_built_in_world("office");
     ASSERT_NE(office, nullptr);
     ASSERT_NE(office->map, nullptr);

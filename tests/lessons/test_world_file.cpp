@@ -41,6 +41,34 @@ TEST(WorldFile, TheShippedStandardArenaIsThePapersArena) {
     EXPECT_EQ(built_in_world().magnetic.amplitude_deg, 12.0);
 }
 
+// The beacon lesson's world: the standard arena's path, start, beacons and magnetic field,
+// with every wall moved from 1.21 m to 1.6 m from the centre (so a robot lost after a
+// displacement does not get pinned against one).
+TEST(WorldFile, TheBeaconFieldIsTheStandardArenaWithItsWallsMovedOut) {
+    const sim::WorldSpec* field = find_built_in_world("beacon_field");
+    ASSERT_NE(field, nullptr);
+    const sim::WorldSpec& arena = built_in_world();
+    EXPECT_EQ(field->start, arena.start);
+    EXPECT_EQ(field->path_side, arena.path_side);
+    EXPECT_EQ(field->path_centre, arena.path_centre);
+    ASSERT_EQ(field->beacons.size(), arena.beacons.size());
+    for (std::size_t i = 0; i < arena.beacons.size(); ++i) {
+        EXPECT_EQ(field->beacons[i].id, arena.beacons[i].id);
+        EXPECT_EQ(field->beacons[i].position, arena.beacons[i].position);
+    }
+    EXPECT_EQ(field->magnetic.amplitude_deg, arena.magnetic.amplitude_deg);
+    ASSERT_EQ(field->walls.size(), arena.walls.size());
+    for (std::size_t i = 0; i < arena.walls.size(); ++i) {
+        const Wall& moved = field->walls[i];
+        const Wall& original = arena.walls[i];
+        EXPECT_EQ(moved.name, original.name);
+        EXPECT_NEAR(moved.start.cwiseAbs().maxCoeff(), 1.6, 1e-12) << moved.name;
+        EXPECT_NEAR(moved.end.cwiseAbs().maxCoeff(), 1.6, 1e-12) << moved.name;
+        EXPECT_NEAR((moved.end - moved.start).norm(), (original.end - original.start).norm(), 1e-12)
+            << moved.name;
+    }
+}
+
 TEST(WorldFile, ParsesBeaconsAndTheMagneticDisturbance) {
     const sim::WorldSpec world = parse_world(R"(
 [[wall]]
