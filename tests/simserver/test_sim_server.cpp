@@ -197,6 +197,26 @@ TEST(SimServer, RefusesANonLoopbackBindUnlessAllowed) {
                                          sim::SimulatorSettings{}, 1, options));
 }
 
+// A world that is a map alone (the office): its extent is the map's, and a pose inside an
+// occupied cell (a wall, a desk) is refused.
+TEST(SimServer, TeleportsWithinAMapOnlyWorld) {
+    const sim::WorldSpec* office = lessons::find_built_in_world("office");
+    ASSERT_NE(office, nullptr);
+    ASSERT_TRUE(office->walls.empty());
+    const auto server = start_test_server(20.0, {}, *office);
+    ControlClient control(loopback(server->ports().control));
+    EXPECT_NO_THROW(control.reset(3, office->start));
+    EXPECT_NO_THROW(control.teleport(Pose2{9.9, 0.8, 0.0}));                  // the twin hall
+    EXPECT_THROW(control.teleport(Pose2{30.0, 0.8, 0.0}), comms::LinkError);  // off the map
+    // The outer wall along y = 0 is occupied: cell row 0 and 1 at 0.05 m.
+    try {
+        control.teleport(Pose2{3.0, 0.025, 0.0});
+        FAIL() << "teleported into a wall";
+    } catch (const comms::LinkError& error) {
+        EXPECT_NE(std::string(error.what()).find("occupied"), std::string::npos) << error.what();
+    }
+}
+
 TEST(SimServer, ResetPauseResumeTeleportAndNoiseRequests) {
     const auto server = start_test_server(20.0);
     ControlClient control(loopback(server->ports().control));

@@ -9,11 +9,12 @@
 namespace legofeup::testing {
 
 inline std::unique_ptr<simserver::SimServer> start_test_server(
-    double time_scale, simserver::SimServerOptions options = {}) {
+    double time_scale, simserver::SimServerOptions options = {},
+    const sim::WorldSpec& world = lessons::built_in_world()) {
     options.bind = comms::Endpoint{0x7F000001, 0};
     options.time_scale = time_scale;
-    auto server = std::make_unique<simserver::SimServer>(
-        lessons::built_in_world(), sim::RobotSpec{}, sim::SimulatorSettings{}, 1, options);
+    auto server = std::make_unique<simserver::SimServer>(world, sim::RobotSpec{},
+                                                         sim::SimulatorSettings{}, 1, options);
     server->start();
     return server;
 }
