@@ -26,6 +26,19 @@ std::vector<ConfigIssue> validate(const ScanGeometry& geometry, const std::strin
     return issues;
 }
 
+std::uint16_t range_reading(std::optional<double> range, const ScanGeometry& geometry) {
+    if (!range || !(*range <= geometry.range_max)) {
+        return kRangeNoEcho;
+    }
+    if (*range < geometry.range_min) {
+        return kRangeTooNear;
+    }
+    // The largest value 16 bits of millimetres carry.
+    constexpr long kMaxMillimetres = 65535;
+    return static_cast<std::uint16_t>(
+        std::clamp<long>(std::lround(*range * 1000.0), kRangeFirstValid, kMaxMillimetres));
+}
+
 std::optional<double> range_of(const LaserScan& scan, int beam, const ScanGeometry& geometry) {
     if (beam < 0 || beam >= scan.beam_count || beam >= kMaxScanBeams) {
         return std::nullopt;

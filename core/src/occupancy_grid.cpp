@@ -234,17 +234,7 @@ void expected_scan(const OccupancyGrid& grid, const Pose2& scanner_pose,
     for (int beam = 0; beam < beams; ++beam) {
         const std::optional<double> range =
             cast_ray(grid, from, scanner_pose.theta + geometry.angle_of(beam), max_range);
-        std::uint16_t value = kRangeNoEcho;
-        if (range) {
-            if (*range < geometry.range_min) {
-                value = kRangeTooNear;
-            } else {
-                const long mm = std::lround(*range * 1000.0);
-                value = static_cast<std::uint16_t>(std::clamp<long>(
-                    mm, kRangeFirstValid, static_cast<long>(kMaxEncodable * 1000)));
-            }
-        }
-        out.range_mm[static_cast<std::size_t>(beam)] = value;
+        out.range_mm[static_cast<std::size_t>(beam)] = range_reading(range, geometry);
     }
     // Entries past the beam count are zero, so equal scans compare equal.
     std::fill(out.range_mm.begin() + beams, out.range_mm.end(), std::uint16_t{0});

@@ -42,6 +42,9 @@ class NxtRobotConnection final : public RobotConnection {
     TruthSource* truth_source() override { return truth_ ? &*truth_ : nullptr; }
     void set_noise(const sim::RobotSpec& /*robot*/) override {}
     void set_paused(bool paused) override { link_.set_paused(paused); }
+    std::string teleport(const Pose2& /*pose*/) override {
+        return describe() + " is not a simulator";
+    }
     void close() override { link_.disconnect(); }
     std::string describe() const override {
         return "NXT at " + link_.options().address.to_string() + " ("

@@ -19,17 +19,12 @@ std::uint16_t laser_reading(const LaserScannerSpec& spec, std::optional<double> 
         return kRangeNoEcho;
     }
     const double range = *distance + laser_range_sigma(spec, *distance) * normal;
-    if (range < spec.geometry.range_min) {
-        return kRangeTooNear;
-    }
-    if (range > spec.geometry.range_max) {
-        return kRangeNoEcho;
-    }
-    if (uniform < spec.dropout_probability) {
+    const std::uint16_t reading = range_reading(range, spec.geometry);
+    // A dropout replaces only a distance (the beam's echo was too weak to measure).
+    if (reading >= kRangeFirstValid && uniform < spec.dropout_probability) {
         return kRangeDropout;
     }
-    // range_min ≥ 0.02 m and range_max ≤ 65.535 m (validated): 20 ≤ mm ≤ 65535.
-    return static_cast<std::uint16_t>(std::lround(1000.0 * range));
+    return reading;
 }
 
 void LaserScanner::scan(const LaserScannerSpec& spec, const b2World& world, const b2Body& chassis,

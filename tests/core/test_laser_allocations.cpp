@@ -1,60 +1,21 @@
 // The laser localisation's step must not touch the heap except for the ICP's kd-tree
 // rebuild over each expected scan: the ray casting, the point buffers and the ICP's pairs
-// reuse what they reserved. This program replaces the global allocation functions to count
+// reuse what they reserved. support/allocation_counter.cpp counts
 // every allocation made while a step runs, and compares a scan's step with rebuilding the
 // same kd-tree alone.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <random>
 
+#include "allocation_counter.hpp"
 #include "kinematic_world.hpp"
 #include "laser_room.hpp"
 #include "legofeup/core/legofeup_loop.hpp"
 
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    if (g_counting.load(std::memory_order_relaxed)) {
-        g_allocations.fetch_add(1, std::memory_order_relaxed);
-    }
-    if (void* memory = std::malloc(size == 0 ? 1 : size)) {
-        return memory;
-    }
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-    return operator new(size);
-}
-void operator delete(void* memory) noexcept {
-    std::free(memory);
-}
-void operator delete[](void* memory) noexcept {
-    std::free(memory);
-}
-void operator delete(void* memory, std::size_t) noexcept {
-    std::free(memory);
-}
-void operator delete[](void* memory, std::size_t) noexcept {
-    std::free(memory);
-}
-
 namespace legofeup {
 namespace {
 
-template <class Work>
-long allocations_of(Work&& work) {
-    g_allocations = 0;
-    g_counting = true;
-    work();
-    g_counting = false;
-    return g_allocations.load();
-}
+using testing::allocations_of;
 
 TEST(LaserAllocations, OnlyTheKdTreeRebuildAllocates) {
     LoopConfig config;

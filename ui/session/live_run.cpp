@@ -153,14 +153,12 @@ void LiveRun::apply(Requests requests, LegoFeupLoop& loop, lessons::RobotConnect
     }
     if (requests.teleport) {
         // Only a simulator server can lift its robot: through its control channel, like the
-        // noise and the pause. (lessons::RobotConnection has no teleport of its own.)
-        auto* simulator = dynamic_cast<lessons::UdpRobotConnection*>(&connection);
-        if (simulator == nullptr) {
-            note("The robot was not kidnapped: " + connection.describe() + " is not a simulator");
-            return;
-        }
+        // noise and the pause.
         try {
-            simulator->control().teleport(*requests.teleport);
+            if (const std::string refusal = connection.teleport(*requests.teleport);
+                !refusal.empty()) {
+                note("The robot was not kidnapped: " + refusal);
+            }
         } catch (const comms::LinkError& error) {
             // The server refused the pose (inside a wall, outside the world) or did not answer:
             // the run goes on where the robot is.

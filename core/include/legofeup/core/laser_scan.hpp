@@ -59,6 +59,11 @@ struct LaserScan {
 /// [geometry.range_min, geometry.range_max].
 std::optional<double> range_of(const LaserScan& scan, int beam, const ScanGeometry& geometry);
 
+/// The reading a scanner reports for a distance (m) along a beam: kRangeNoEcho for none or
+/// beyond geometry.range_max, kRangeTooNear below geometry.range_min, else whole
+/// millimetres (at least kRangeFirstValid, at most 65535). The inverse of range_of.
+std::uint16_t range_reading(std::optional<double> range, const ScanGeometry& geometry);
+
 /// The measured points of a scan as 2-D points in the frame of `frame_pose` (which is the
 /// scanner's pose in that frame; the identity gives the scanner's own frame). Error codes
 /// are skipped. Clears `out` first; does not allocate once `out` has kMaxScanBeams capacity.

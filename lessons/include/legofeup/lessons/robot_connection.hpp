@@ -27,6 +27,10 @@ class RobotConnection {
     /// A simulator stops its clock; a real robot stops its motors and ignores wheel commands
     /// until resumed (its clock cannot stop: frames keep coming, the robot stands still).
     virtual void set_paused(bool paused) = 0;
+    /// Lifts a simulated robot to `pose` (a kidnapping; the filter is not told) and returns
+    /// an empty string. A real robot cannot be lifted: it returns why and changes nothing.
+    /// Throws comms::LinkError when the simulator refuses the pose or does not answer.
+    virtual std::string teleport(const Pose2& pose) = 0;
     /// Stops the motors and lets the robot go (once; never throws).
     virtual void close() = 0;
     /// "udp://127.0.0.1:5600", "NXT at bt:00:16:53:01:02:03 (direct commands)".

@@ -46,6 +46,10 @@ class UdpRobotConnection final : public RobotConnection {
     void set_noise(const sim::RobotSpec& robot) override;
     /// Pauses or resumes the server's clock.
     void set_paused(bool paused) override;
+    std::string teleport(const Pose2& pose) override {
+        control_.teleport(pose);
+        return {};
+    }
     /// Stops the motors and releases the robot (once).
     void close() override;
     std::string describe() const override { return "udp://" + robot_.to_string(); }
