@@ -19,8 +19,9 @@ int main(int argc, char** argv) {
 
     ServerCommand command;
     app.add_option("--world,-w", command.world_file,
-                   "World file (TOML); default: the built-in standard arena")
-        ->check(CLI::ExistingFile);
+                   "A built-in world (standard_arena, office, beacon_field) or a world file "
+                   "(TOML); default: the built-in standard arena")
+        ->check(world_name_or_file);
     app.add_option("--seed,-s", command.seed, "Seed of every noise stream");
     app.add_option("--bind,-b", command.bind_address,
                    "IPv4 address to listen on (non-loopback needs --allow-remote)");

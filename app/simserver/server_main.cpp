@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <system_error>
@@ -69,6 +70,17 @@ bool wait_for_signal(const sigset_t& signals, double seconds) {
 
 }  // namespace
 
+std::string world_name_or_file(const std::string& value) {
+    if (lessons::find_built_in_world(value) != nullptr || std::filesystem::is_regular_file(value)) {
+        return "";
+    }
+    std::string names;
+    for (const std::string& name : lessons::built_in_world_names()) {
+        names += (names.empty() ? "" : ", ") + name;
+    }
+    return "'" + value + "': neither a built-in world (" + names + ") nor a world file";
+}
+
 int run_server(const ServerCommand& command) {
     const auto bind = comms::parse_endpoint(command.bind_address, 0);
     if (!bind || command.bind_address.find(':') != std::string::npos) {
@@ -86,9 +98,8 @@ int run_server(const ServerCommand& command) {
 
     std::optional<simserver::SimServer> server;
     try {
-        sim::WorldSpec world = command.world_file.empty()
-                                   ? lessons::built_in_world()
-                                   : lessons::load_world_file(command.world_file);
+        sim::WorldSpec world = command.world_file.empty() ? lessons::built_in_world()
+                                                          : lessons::load_world(command.world_file);
         server.emplace(std::move(world), command.robot, command.settings, command.seed,
                        server_options(command, *bind));
     } catch (const std::exception& error) {

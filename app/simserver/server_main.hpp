@@ -31,4 +31,8 @@ struct ServerCommand {
 /// message on stderr for bad input (world file, options, a port in use), as legofeup-cli.
 int run_server(const ServerCommand& command);
 
+/// --world's check: "" when `value` is a built-in world's name or an existing file, else why
+/// not (CLI11's validator convention).
+std::string world_name_or_file(const std::string& value);
+
 }  // namespace legofeup::simserver_app

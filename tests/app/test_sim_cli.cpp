@@ -94,6 +94,11 @@ TEST_F(SimCli, ServerRefusesBadOptionsWithAPreciseMessage) {
     EXPECT_EQ(noise.exit_code, 1);
     EXPECT_NE(noise.err.find("slip_noise = -1"), std::string::npos) << noise.err;
 
+    const Result absent = run(LEGOFEUP_SIM, "--port 0 --duration 1 --world offce");
+    EXPECT_NE(absent.exit_code, 0);  // CLI11's validation exit code
+    EXPECT_NE(absent.err.find("--world: 'offce': neither a built-in world"), std::string::npos)
+        << absent.err;
+
     const fs::path world = dir_ / "bad_world.toml";
     std::ofstream(world) << "name = \"broken\"\n[[walls]]\nname = \"w\"\nfrom = [0.0, 0.0]\n"
                             "to = \"nowhere\"\n";
@@ -113,6 +118,12 @@ TEST_F(SimCli, ServerPrintsWhereItListensAndStopsAfterItsDuration) {
     EXPECT_EQ(result.exit_code, 0) << result.err;
     EXPECT_NE(result.out.find("robot   udp://127.0.0.1:"), std::string::npos) << result.out;
     EXPECT_NE(result.out.find("LegoFeup standard arena"), std::string::npos) << result.out;
+}
+
+TEST_F(SimCli, ServerRunsABuiltInWorldByItsName) {
+    const Result result = run(LEGOFEUP_SIM, "--port 0 --duration 0.3 --world office");
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_NE(result.out.find("world 'Office floor'"), std::string::npos) << result.out;
 }
 
 }  // namespace
