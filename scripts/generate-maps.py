@@ -13,6 +13,7 @@ Plain Python 3 standard library only; the output is byte-for-byte reproducible.
 """
 
 import math
+import random
 import sys
 from pathlib import Path
 
@@ -143,18 +144,88 @@ def office_rectangles():
     return rects
 
 
-def office():
-    cols = round(OFFICE_WIDTH / OFFICE_RESOLUTION)
-    rows = round(OFFICE_HEIGHT / OFFICE_RESOLUTION)
-    grid = Grid(cols, rows, OFFICE_RESOLUTION, (0.0, 0.0))
-    for rect in office_rectangles():
+def office_floor(resolution, rectangles):
+    """The 12 m x 8 m floor at this resolution, origin (0, 0), with these rectangles solid."""
+    grid = Grid(round(OFFICE_WIDTH / resolution), round(OFFICE_HEIGHT / resolution), resolution,
+                (0.0, 0.0))
+    for rect in rectangles:
         grid.fill_rect(*rect)
     return grid
+
+
+def office():
+    return office_floor(OFFICE_RESOLUTION, office_rectangles())
+
+
+# The office as built, which the simulator's walls follow: the same plan at 0.02 m per pixel,
+# but a face of a wall or a piece of furniture may stand up to 2 cm further out than the
+# surveyed map (office.pgm) has it. The map's 0.05 m cells cannot say where inside a cell a
+# face is; on the real robot that is why a matched scan places it to centimetres, not better.
+# Faces only grow (a shrinking wall would open a gap where two walls meet), by 0 or 0.02 m,
+# drawn from a fixed seed; a face on the floor's border stays. The twin halls grow alike.
+AS_BUILT_RESOLUTION = 0.02
+AS_BUILT_GROWTH = (0.0, 0.02)
+AS_BUILT_SEED = 20261125
+
+
+def rasterised_edge(edge, resolution, low):
+    """Where fill_rect's cell-centre test puts a rectangle's face on a grid from 0."""
+    cells = (edge / resolution - 0.5) if low else (edge / resolution + 0.5)
+    boundary = math.ceil(cells - 1e-9) if low else math.floor(cells + 1e-9)
+    return boundary * resolution
+
+
+def grown_face(edge, growth, low):
+    """The face moved outwards by growth, unless the as-built grid would put it 2.5 cm or
+    more from the surveyed face (then a survey at 0.05 m would have seen it elsewhere)."""
+    moved = edge - growth if low else edge + growth
+    if abs(rasterised_edge(moved, AS_BUILT_RESOLUTION, low) - edge) < 0.025 - 1e-9:
+        return moved
+    return edge
+
+
+def office_as_built_rectangles():
+    chooser = random.Random(AS_BUILT_SEED)
+    base = office_rectangles()
+    twins = len(HALL_FURNITURE) * 2
+    rects = []
+    grown = {}
+    for index, (x0, y0, x1, y1) in enumerate(base):
+        # A twin (odd entries among the hall furniture) grows as its west-hall original.
+        is_twin = index >= len(base) - twins and (index - (len(base) - twins)) % 2 == 1
+        if is_twin:
+            g = grown[index - 1]
+            rects.append((g[0] + TWIN_OFFSET, g[1], g[2] + TWIN_OFFSET, g[3]))
+            continue
+        growth = [chooser.choice(AS_BUILT_GROWTH) for _ in range(4)]
+        g = (x0 if x0 <= 0.0 else grown_face(x0, growth[0], True),
+             y0 if y0 <= 0.0 else grown_face(y0, growth[1], True),
+             x1 if x1 >= OFFICE_WIDTH else grown_face(x1, growth[2], False),
+             y1 if y1 >= OFFICE_HEIGHT else grown_face(y1, growth[3], False))
+        grown[index] = g
+        rects.append(g)
+    return rects
+
+
+def office_as_built():
+    return office_floor(AS_BUILT_RESOLUTION, office_as_built_rectangles())
+
+
+def check_survey(surveyed, as_built):
+    """The surveyed map is what the as-built office looks like at the survey's cell centres."""
+    for row in range(surveyed.height):
+        for col in range(surveyed.width):
+            x, y = surveyed.centre(col, row)
+            fine = as_built.cells[int(y / as_built.resolution)][int(x / as_built.resolution)]
+            if fine != surveyed.cells[row][col]:
+                raise AssertionError(f"office cell ({col}, {row}) differs from the as-built one")
 
 
 def outputs(maps_dir):
     arena = standard_arena()
     office_grid = office()
+    built = office_as_built()
+    check_survey(office_grid, built)
     return {
         maps_dir / "standard_arena.pgm": arena.pgm("LegoFeup standard arena, 0.01 m/px"),
         maps_dir / "standard_arena.yaml": YAML_TEMPLATE.format(
@@ -166,6 +237,11 @@ def outputs(maps_dir):
             title="An office floor, 12 m x 8 m: twin halls, a corridor, three rooms",
             image="office.pgm", resolution=number(office_grid.resolution),
             ox=number(office_grid.origin[0]), oy=number(office_grid.origin[1])).encode("ascii"),
+        maps_dir / "office_as_built.pgm": built.pgm("LegoFeup office floor as built, 0.02 m/px"),
+        maps_dir / "office_as_built.yaml": YAML_TEMPLATE.format(
+            title="The office floor as built (the simulator's walls): faces up to 2 cm out",
+            image="office_as_built.pgm", resolution=number(built.resolution),
+            ox=number(built.origin[0]), oy=number(built.origin[1])).encode("ascii"),
     }
 
 

@@ -569,7 +569,8 @@ std::vector<Setting> make_settings() {
     s.push_back(laps);
     s.push_back(real(
         "duration", "duration",
-        "simulated seconds for routines other than the square; 0: 200 s per lap",
+        "simulated seconds to run (a square or rectangle stops at its laps or here, whichever "
+        "comes first); 0: 200 s per lap",
         [](auto& c) -> auto& { return c.duration; }));
     s.push_back(file("world", "world",
                      "world: a built-in world (standard_arena, office) or a world file "

@@ -538,7 +538,7 @@ OccupancyGrid load_map_file(const std::filesystem::path& yaml) {
 }
 
 const std::vector<std::string>& built_in_map_names() {
-    static const std::vector<std::string> names = {"standard_arena", "office"};
+    static const std::vector<std::string> names = {"standard_arena", "office", "office_as_built"};
     return names;
 }
 

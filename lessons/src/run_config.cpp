@@ -83,7 +83,7 @@ Controller make_controller(const RunConfig& config, const sim::WorldSpec& world)
 std::shared_ptr<const OccupancyGrid> filter_map(const RunConfig& config,
                                                 const sim::WorldSpec& world) {
     if (config.laser_map_file.empty()) {
-        return world.map;
+        return world.surveyed_map ? world.surveyed_map : world.map;
     }
     try {
         return load_map(config.laser_map_file);
@@ -222,8 +222,15 @@ ResolvedRun resolve(const RunConfig& config) {
         config.routine.kind == RoutineSpec::Kind::Rectangle
             ? std::max(1.0, 2.0 * config.routine.rectangle_size.sum() / kStandardLapLength)
             : 1.0;
-    run.max_duration = lapped || config.duration <= 0.0 ? kSecondsPerLap * config.laps * lap_scale
-                                                        : config.duration;
+    // A lapped routine ends with its laps, or at 200 s per lap; a duration, when given, ends
+    // it sooner (a lesson that shows only the start of a lap). Other routines run for the
+    // duration, or as long as a lap would take.
+    const double lap_limit = kSecondsPerLap * config.laps * lap_scale;
+    if (config.duration <= 0.0) {
+        run.max_duration = lap_limit;
+    } else {
+        run.max_duration = lapped ? std::min(lap_limit, config.duration) : config.duration;
+    }
     return run;
 }
 

@@ -272,21 +272,27 @@ class WorldReader {
         }
     }
 
-    // [map] file = "../maps/office.yaml": an occupancy grid whose occupied cells are solid.
+    // [map] file = "../maps/office_as_built.yaml": an occupancy grid whose occupied cells are
+    // solid; surveyed = "../maps/office.yaml" (optional): the map the robot's filter is given.
     void read_map(const toml::node& node, sim::WorldSpec& world) {
         const auto* table = node.as_table();
         if (table == nullptr) {
-            problem(node, "map", "must be a table with file");
+            problem(node, "map", "must be a table with file (and optionally surveyed)");
             return;
         }
         bool has_file = false;
         for (const auto& [key, value] : *table) {
             const std::string name = "map." + std::string(key.str());
-            if (key != "file") {
-                problem(value, name, "unknown key (expected file)");
+            std::shared_ptr<const OccupancyGrid>* target = nullptr;
+            if (key == "file") {
+                has_file = true;
+                target = &world.map;
+            } else if (key == "surveyed") {
+                target = &world.surveyed_map;
+            } else {
+                problem(value, name, "unknown key (expected file or surveyed)");
                 continue;
             }
-            has_file = true;
             const auto* file = value.as_string();
             if (file == nullptr || file->get().empty()) {
                 problem(value, name,
@@ -295,7 +301,7 @@ class WorldReader {
                 continue;
             }
             try {
-                world.map = load_map_(file->get());
+                *target = load_map_(file->get());
             } catch (const InputError& error) {
                 // The map's own problems (at their lines), then where this world names it.
                 problems_.insert(problems_.end(), error.problems().begin(), error.problems().end());

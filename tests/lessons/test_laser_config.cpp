@@ -106,6 +106,39 @@ TEST(WorldMap, AnUnusableMapIsReportedInItsFileAndAtTheWorldsLine) {
     EXPECT_EQ(absent[1].key, "map.file");
 }
 
+TEST(WorldMap, ASurveyedMapIsReadBesideTheWorldsMapAndGoesToTheFilter) {
+    const fs::path dir = temp_dir();
+    write_room_map(dir / "room.yaml");
+    write_room_map(dir / "survey" / "room.yaml");
+    write_file(dir / "world.toml",
+               "[start]\nx = 0.25\ny = 0.25\n[map]\nfile = \"room.yaml\"\n"
+               "surveyed = \"survey/room.yaml\"\n");
+    const sim::WorldSpec world = load_world_file(dir / "world.toml");
+    ASSERT_NE(world.map, nullptr);
+    ASSERT_NE(world.surveyed_map, nullptr);
+    EXPECT_NE(world.map, world.surveyed_map);  // two files, two maps
+    EXPECT_EQ(world.surveyed_map->cells(), world.map->cells());
+
+    RunConfig config;
+    config.world_file = (dir / "world.toml").string();
+    config.lesson.localisation = Localisation::Laser;
+    EXPECT_EQ(resolve(config).loop.map->cells(), world.surveyed_map->cells());
+
+    // Without file, or with an unusable survey: errors at the world's lines.
+    auto problems =
+        problems_of([&] { parse_world("[map]\nsurveyed = \"room.yaml\"\n", "w.toml", dir); });
+    ASSERT_EQ(problems.size(), 1U);
+    EXPECT_EQ(problems[0].key, "map");
+    EXPECT_EQ(problems[0].reason, "needs file = \"<map>.yaml\"");
+    problems = problems_of([&] {
+        parse_world("[map]\nfile = \"room.yaml\"\nsurveyed = \"absent.yaml\"\n", "w.toml", dir);
+    });
+    ASSERT_EQ(problems.size(), 2U);
+    EXPECT_EQ(problems[1].key, "map.surveyed");
+    EXPECT_EQ(problems[1].line, 3);
+    EXPECT_EQ(problems[1].reason, "the map file is unusable");
+}
+
 TEST(WorldMap, MapTablesAndStartPosesAreChecked) {
     const fs::path dir = temp_dir();
     write_room_map(dir / "room.yaml");
@@ -133,7 +166,8 @@ TEST(WorldMap, TheOfficeIsABuiltInWorldWithItsMap) {
     const sim::WorldSpec* office = find_built_in_world("office");
     ASSERT_NE(office, nullptr);
     ASSERT_NE(office->map, nullptr);
-    EXPECT_EQ(office->map, find_built_in_map("office"));  // one copy, shared
+    EXPECT_EQ(office->map, find_built_in_map("office_as_built"));  // one copy, shared
+    EXPECT_EQ(office->surveyed_map, find_built_in_map("office"));
     EXPECT_EQ(office->start, (Pose2{1.0, 0.8, 0.0}));
     EXPECT_EQ(office->path_side, 2.5);
     EXPECT_EQ(office->path_centre, Vector2(2.25, 2.05));
@@ -146,6 +180,8 @@ TEST(WorldMap, TheOfficeIsABuiltInWorldWithItsMap) {
         load_world_file(std::string(LEGOFEUP_SOURCE_DIR) + "/resources/worlds/office.toml");
     ASSERT_NE(file.map, nullptr);
     EXPECT_EQ(file.map->cells(), office->map->cells());
+    ASSERT_NE(file.surveyed_map, nullptr);
+    EXPECT_EQ(file.surveyed_map->cells(), office->surveyed_map->cells());
     EXPECT_EQ(file.name, office->name);
     EXPECT_EQ(load_world("office").map, office->map);
 }
@@ -338,13 +374,14 @@ TEST(LaserSettings, ValidationProblemsPointAtTheSettingsLine) {
 
 // --- The filter's map -------------------------------------------------------------------------
 
-TEST(LaserMap, TheFilterUsesTheWorldsMapUnlessTheLaserSectionNamesAnother) {
+TEST(LaserMap, TheFilterUsesTheWorldsSurveyedMapUnlessTheLaserSectionNamesAnother) {
     RunConfig config;
     config.world_file = "office";
     config.lesson.localisation = Localisation::Laser;
     const ResolvedRun run = resolve(config);
     ASSERT_NE(run.world.map, nullptr);
-    EXPECT_EQ(run.loop.map, run.world.map);
+    ASSERT_NE(run.world.surveyed_map, nullptr);
+    EXPECT_EQ(run.loop.map, run.world.surveyed_map);  // not the office as built
     EXPECT_EQ(run.world.name, "Office floor");
     EXPECT_EQ(run.loop.initial.pose, (Pose2{1.0, 0.8, 0.0}));
 
@@ -421,6 +458,12 @@ TEST(RectangleRoutine, DrivesTheRectangleCounterClockwiseFromItsCorner) {
     }
     // A 13 m lap gets 13/8 of the standard 8 m square's 200 s.
     EXPECT_DOUBLE_EQ(run.max_duration, 2 * 200.0 * 13.0 / 8.0);
+    // A duration ends a lapped run sooner, never later.
+    config.duration = 60.0;
+    EXPECT_DOUBLE_EQ(resolve(config).max_duration, 60.0);
+    config.duration = 5000.0;
+    EXPECT_DOUBLE_EQ(resolve(config).max_duration, 2 * 200.0 * 13.0 / 8.0);
+    config.duration = 0.0;
 
     config.routine.rectangle_size = {0.0, 2.5};
     const auto problems = problems_of([&] { resolve(config); });

@@ -188,6 +188,56 @@ TEST(ShippedMaps, TheOfficeDoorsAreOpen) {
     }
 }
 
+// The office as built (the simulator's walls, 0.02 m) and as surveyed (the filter's map,
+// 0.05 m): the survey recorded what stands at each of its cell centres, and the building's
+// faces stand up to 2 cm further out than the survey's cells (never further in).
+TEST(ShippedMaps, TheOfficeAsSurveyedIsTheOfficeAsBuiltSeenAtFiveCentimetres) {
+    const OccupancyGrid surveyed = load_map_file(kMaps + "office.yaml");
+    const OccupancyGrid built = load_map_file(kMaps + "office_as_built.yaml");
+    EXPECT_EQ(built.resolution(), 0.02);
+    EXPECT_EQ(built.width(), 600);
+    EXPECT_EQ(built.height(), 400);
+    for (int row = 0; row < surveyed.height(); ++row) {
+        for (int col = 0; col < surveyed.width(); ++col) {
+            const Vector2 centre = surveyed.centre_of({col, row});
+            ASSERT_EQ(built.at(*built.cell_of(centre)), surveyed.at({col, row}))
+                << col << ", " << row;
+        }
+    }
+    // Where the two differ, the building is solid and the survey's cell free, within 2 cm
+    // (one fine cell) of a cell the survey has occupied.
+    int grown = 0;
+    for (int row = 0; row < built.height(); ++row) {
+        for (int col = 0; col < built.width(); ++col) {
+            const Vector2 centre = built.centre_of({col, row});
+            const bool surveyed_occupied = surveyed.occupied(*surveyed.cell_of(centre));
+            if (built.occupied({col, row}) == surveyed_occupied) {
+                continue;
+            }
+            ++grown;
+            EXPECT_TRUE(built.occupied({col, row})) << centre.transpose();
+            bool beside_survey = false;
+            for (const Vector2& step :
+                 {Vector2{0.02, 0}, Vector2{-0.02, 0}, Vector2{0, 0.02}, Vector2{0, -0.02},
+                  Vector2{0.02, 0.02}, Vector2{-0.02, 0.02}, Vector2{0.02, -0.02},
+                  Vector2{-0.02, -0.02}}) {
+                const auto cell = surveyed.cell_of(centre + step);
+                beside_survey = beside_survey || (cell && surveyed.occupied(*cell));
+            }
+            EXPECT_TRUE(beside_survey) << centre.transpose();
+        }
+    }
+    // Many faces moved: thousands of 2 cm cells, not a handful.
+    EXPECT_GT(grown, 2000);
+}
+
+TEST(ShippedMaps, TheOfficeWorldIsBuiltFromOneMapAndGivesTheFilterTheOther) {
+    const sim::WorldSpec* office = find_built_in_world("office");
+    ASSERT_NE(office, nullptr);
+    EXPECT_EQ(office->map, find_built_in_map("office_as_built"));
+    EXPECT_EQ(office->surveyed_map, find_built_in_map("office"));
+}
+
 TEST(ShippedMaps, TheBuiltInMapsAreTheFilesOnDisk) {
     for (const std::string& name : built_in_map_names()) {
         SCOPED_TRACE(name);

@@ -41,7 +41,9 @@ ArenaScene scene_of(const lessons::ResolvedRun& run) {
     if (run.loop.lesson.localisation == Localisation::Beacons) {
         scene.beacons = run.world.beacons;
     }
-    scene.map = run.world.map;
+    // The map students compare scans with is the one the robot was given (as surveyed), not
+    // the world as built, which differs by centimetres that would not show.
+    scene.map = run.world.surveyed_map ? run.world.surveyed_map : run.world.map;
     if (run.loop.lesson.localisation == Localisation::Laser) {
         const LaserTuning& laser = run.loop.lesson.laser;
         scene.laser.active = true;
@@ -53,8 +55,8 @@ ArenaScene scene_of(const lessons::ResolvedRun& run) {
         scene.laser.recovery_after_mismatches = laser.recovery_after_mismatches;
         scene.laser.kidnap_recovery = laser.kidnap_recovery;
         scene.laser.recovery_covariance_factor = laser.recovery_covariance_factor;
-        if (run.loop.map && run.loop.map != run.world.map
-            && (!run.world.map || !same_map(*run.loop.map, *run.world.map))) {
+        if (run.loop.map && run.loop.map != scene.map
+            && (!scene.map || !same_map(*run.loop.map, *scene.map))) {
             scene.filter_map = run.loop.map;
         }
     }

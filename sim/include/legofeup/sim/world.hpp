@@ -46,6 +46,10 @@ struct WorldSpec {
     /// An occupancy-grid map (paper 001) whose occupied cells are solid in the world, beside
     /// the walls; none by default. Shared read-only (the filter may use the same map).
     std::shared_ptr<const OccupancyGrid> map;
+    /// The map the robot's filter is given, as surveyed: coarser than the world it describes
+    /// (resources/maps/office.pgm for the office as built). None: the filter is given `map`.
+    /// The simulator does not use it.
+    std::shared_ptr<const OccupancyGrid> surveyed_map;
 };
 
 /// Everything wrong with a world the simulator would run in: duplicate beacon ids, ids
