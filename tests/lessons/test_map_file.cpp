@@ -13,25 +13,12 @@
 
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/map_file.hpp"
+#include "scratch_dir_test_support.hpp"
 
 namespace legofeup::lessons {
 namespace {
 
-namespace fs = std::filesystem;
-
-// Per process and test: ctest runs tests in parallel processes.
-fs::path temp_dir() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path dir = fs::temp_directory_path()
-                         / ("legofeup_map_file_tests_" + std::to_string(::getpid()))
-                         / (std::string(test->test_suite_name()) + "." + test->name());
-    fs::create_directories(dir);
-    return dir;
-}
-
-void write_file(const fs::path& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
+using namespace scratch_testing;
 
 std::string yaml_text(const std::string& image = "map.pgm", const std::string& extra = "") {
     return "image: " + image

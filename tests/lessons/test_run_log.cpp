@@ -21,29 +21,12 @@
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/sim/lockstep_link.hpp"
 #include "legofeup/sim/simulator.hpp"
+#include "run_log_test_support.hpp"
 
 namespace legofeup::lessons {
 namespace {
 
-namespace fs = std::filesystem;
-
-// Per process: ctest runs each test in its own process, in parallel, and several of them
-// record short.log.
-fs::path temp_file(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("legofeup_run_log_tests_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    return dir / name;
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
+using namespace run_log_testing;
 
 /// Experiment f, one lap: walls, updates and rejections all happen.
 ResolvedRun experiment_f(std::uint64_t seed = 5) {
@@ -124,16 +107,6 @@ class LossyLink final : public RobotLink {
     int calls_ = 0;
 };
 
-std::string message_of(const fs::path& path) {
-    try {
-        load_run_log(path);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    return "(no error)";
-}
-
-/// The log's text with line `number` (1-based) replaced by `replacement`.
 std::string with_line(const std::string& text, int number, const std::string& replacement) {
     std::istringstream in(text);
     std::string out;

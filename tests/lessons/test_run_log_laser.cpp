@@ -20,65 +20,12 @@
 #include "legofeup/lessons/recording/refilter.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/run_config.hpp"
+#include "run_log_test_support.hpp"
 
 namespace legofeup::lessons {
 namespace {
 
-namespace fs = std::filesystem;
-
-fs::path temp_file(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("legofeup_run_log_laser_tests_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    return dir / name;
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        lines.push_back(line);
-    }
-    return lines;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-    std::string text;
-    for (const std::string& line : lines) {
-        text += line + '\n';
-    }
-    return text;
-}
-
-std::vector<std::string> cells_of(const std::string& line) {
-    std::vector<std::string> cells;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = line.find(',', start);
-        cells.push_back(line.substr(start, comma - start));
-        if (comma == std::string::npos) {
-            return cells;
-        }
-        start = comma + 1;
-    }
-}
-
-std::string joined_cells(const std::vector<std::string>& cells) {
-    std::string line;
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-        line += (i == 0 ? "" : ",") + cells[i];
-    }
-    return line;
-}
+using namespace run_log_testing;
 
 SensorFrame base_frame(std::uint32_t sequence) {
     SensorFrame frame;
@@ -131,62 +78,14 @@ std::vector<SensorFrame> frames() {
     return out;
 }
 
-/// Records frames() (then a step without a frame) through the writer, with an empty
-/// configuration block (these tests are about the records).
+/// Records frames(), then a step without a frame, with an empty configuration block.
 fs::path record(const std::string& name) {
-    const fs::path path = temp_file(name);
-    {
-        const ResolvedRun run{};
-        RunLogWriter writer(path, run, "laser scans");
-        std::uint64_t step = 0;
-        for (const SensorFrame& frame : frames()) {
-            LoopSnapshot snapshot;
-            snapshot.step = ++step;
-            snapshot.time = frame.time;
-            snapshot.frame = frame;
-            writer.on_step(snapshot, GroundTruth{});
-        }
-        LoopSnapshot missing;
-        missing.step = ++step;
-        missing.time = 0.3;
-        missing.frame_missing = true;
-        missing.frame.time = 0.3;
-        missing.frame.has_laser_scan = true;  // whatever a missing frame holds is not recorded
-        missing.frame.laser.beam_count = 5;
-        writer.on_step(missing, GroundTruth{});
-        writer.close();
-    }
-    std::vector<std::string> kept;
-    const std::vector<std::string> lines = lines_of(read_text(path));
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        if (lines[i].rfind("config: ", 0) == 0) {
-            kept.push_back("config: 0 lines");
-            i += static_cast<std::size_t>(std::stoi(lines[i].substr(8)));
-        } else {
-            kept.push_back(lines[i]);
-        }
-    }
-    write_text(path, joined(kept));
-    return path;
-}
-
-int first_record_line(const std::vector<std::string>& lines) {
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        if (lines[i].rfind("columns: ", 0) == 0) {
-            return static_cast<int>(i) + 1;
-        }
-    }
-    ADD_FAILURE() << "no columns line";
-    return 0;
-}
-
-std::string message_of(const fs::path& path) {
-    try {
-        load_run_log(path);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    return "(no error)";
+    LoopSnapshot missing;
+    missing.time = 0.3;
+    missing.frame.time = 0.3;
+    missing.frame.has_laser_scan = true;  // whatever a missing frame holds is not recorded
+    missing.frame.laser.beam_count = 5;
+    return record_frames(name, "laser scans", frames(), LoopSnapshot{}, missing);
 }
 
 TEST(RunLogLaser, EveryScanRoundTripsExactly) {

@@ -20,65 +20,12 @@
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/run_config.hpp"
+#include "run_log_test_support.hpp"
 
 namespace legofeup::lessons {
 namespace {
 
-namespace fs = std::filesystem;
-
-fs::path temp_file(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path()
-                         / ("legofeup_run_log_optional_tests_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    return dir / name;
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        lines.push_back(line);
-    }
-    return lines;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-    std::string text;
-    for (const std::string& line : lines) {
-        text += line + '\n';
-    }
-    return text;
-}
-
-std::vector<std::string> cells_of(const std::string& line) {
-    std::vector<std::string> cells;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = line.find(',', start);
-        cells.push_back(line.substr(start, comma - start));
-        if (comma == std::string::npos) {
-            return cells;
-        }
-        start = comma + 1;
-    }
-}
-
-std::string joined_cells(const std::vector<std::string>& cells) {
-    std::string line;
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-        line += (i == 0 ? "" : ",") + cells[i];
-    }
-    return line;
-}
+using namespace run_log_testing;
 
 SensorFrame base_frame(std::uint32_t sequence) {
     SensorFrame frame;
@@ -156,61 +103,15 @@ void expect_same_frame(const SensorFrame& actual, const SensorFrame& expected) {
     }
 }
 
-/// Records frames() (then a step without a frame) through the writer as a run would.
+/// Records frames(), then a step without a frame, with an empty configuration block.
 fs::path record(const std::string& name) {
-    const fs::path path = temp_file(name);
-    const ResolvedRun run{};  // unresolved defaults: only the header is taken from it
-    RunLogWriter writer(path, run, "optional sensors");
-    std::uint64_t step = 0;
-    for (const SensorFrame& frame : frames()) {
-        LoopSnapshot snapshot;
-        snapshot.step = ++step;
-        snapshot.time = frame.time;
-        snapshot.frame = frame;
-        snapshot.wheels = {0.1, 0.2};
-        writer.on_step(snapshot, GroundTruth{});
-    }
+    LoopSnapshot step;
+    step.wheels = {0.1, 0.2};
     LoopSnapshot missing;
-    missing.step = ++step;
     missing.time = 0.25;
-    missing.frame_missing = true;
     missing.frame.time = 0.25;
     missing.frame.has_gyro = true;  // whatever a missing frame holds is not recorded
-    writer.on_step(missing, GroundTruth{});
-    writer.close();
-    // The configuration block is not what these tests read: an empty one (the defaults)
-    // keeps them about the records alone.
-    std::vector<std::string> lines = lines_of(read_text(path));
-    std::vector<std::string> kept;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        if (lines[i].rfind("config: ", 0) == 0) {
-            kept.push_back("config: 0 lines");
-            i += static_cast<std::size_t>(std::stoi(lines[i].substr(8)));
-        } else {
-            kept.push_back(lines[i]);
-        }
-    }
-    write_text(path, joined(kept));
-    return path;
-}
-
-std::string message_of(const fs::path& path) {
-    try {
-        load_run_log(path);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    return "(no error)";
-}
-
-int first_record_line(const std::vector<std::string>& lines) {
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        if (lines[i].rfind("columns: ", 0) == 0) {
-            return static_cast<int>(i) + 1;  // 0-based index of the line after it
-        }
-    }
-    ADD_FAILURE() << "no columns line";
-    return 0;
+    return record_frames(name, "optional sensors", frames(), step, missing);
 }
 
 TEST(RunLogOptionalSensors, EveryFieldRoundTripsBitForBit) {

@@ -12,43 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "csv_test_support.hpp"
 #include "legofeup/core/loop_config.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
 
 namespace legofeup::lessons {
 namespace {
 
-std::vector<std::string> cells_of(const std::string& line) {
-    std::vector<std::string> cells;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = line.find(',', start);
-        cells.push_back(line.substr(start, comma - start));
-        if (comma == std::string::npos) {
-            return cells;
-        }
-        start = comma + 1;
-    }
-}
-
-/// Each row of the trace as column name → cell.
-std::vector<std::map<std::string, std::string>> rows_of(const std::string& csv) {
-    std::istringstream in(csv);
-    std::string header;
-    std::getline(in, header);
-    const std::vector<std::string> names = cells_of(header);
-    std::vector<std::map<std::string, std::string>> rows;
-    for (std::string line; std::getline(in, line);) {
-        const std::vector<std::string> cells = cells_of(line);
-        EXPECT_EQ(cells.size(), names.size()) << line;
-        std::map<std::string, std::string> row;
-        for (std::size_t i = 0; i < names.size() && i < cells.size(); ++i) {
-            row[names[i]] = cells[i];
-        }
-        rows.push_back(row);
-    }
-    return rows;
-}
+using csv_testing::cells_of;
+using csv_testing::rows_of;
 
 double value(const std::map<std::string, std::string>& row, const std::string& name) {
     const auto it = row.find(name);

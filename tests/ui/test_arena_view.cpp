@@ -15,6 +15,7 @@
 #include "legofeup/ui/arena/arena_colors.hpp"
 #include "legofeup/ui/arena/arena_view.hpp"
 #include "legofeup/ui/arena/covariance_ellipse.hpp"
+#include "support/arena_pixels.hpp"
 #include "support/lockstep_history.hpp"
 
 namespace legofeup::ui {
@@ -23,9 +24,7 @@ namespace {
 
 using testing::one_lap;
 
-QImage render(ArenaView& view) {
-    return view.grab().toImage().convertToFormat(QImage::Format_ARGB32);
-}
+using testing::render;
 
 /// The pixel under a widget point (device-independent) of an image grabbed from the view.
 QColor pixel_at(const QImage& image, const QPointF& widget_point) {

@@ -27,6 +27,7 @@
 #include "legofeup/ui/plots/plots_panel.hpp"
 #include "legofeup/ui/session/session.hpp"
 #include "legofeup/ui/window/kidnap_action.hpp"
+#include "support/arena_pixels.hpp"
 #include "support/lockstep_history.hpp"
 #include "support/screenshot.hpp"
 
@@ -159,29 +160,8 @@ QPointF beam_end(const Pose2& scanner, int beam, std::uint16_t range_mm) {
     return {scanner.x + range * std::cos(angle), scanner.y + range * std::sin(angle)};
 }
 
-QImage render(ArenaView& view) {
-    return view.grab().toImage().convertToFormat(QImage::Format_ARGB32);
-}
-
-/// The smallest colour distance to `target` among the pixels within 1 px of `point`.
-int nearest_colour_distance(const QImage& image, const QPointF& point, const QColor& target) {
-    const double ratio = image.devicePixelRatio();
-    int best = 1000;
-    for (int dx = -1; dx <= 1; ++dx) {
-        for (int dy = -1; dy <= 1; ++dy) {
-            const QPoint p(static_cast<int>(std::floor(point.x() * ratio)) + dx,
-                           static_cast<int>(std::floor(point.y() * ratio)) + dy);
-            if (!image.rect().contains(p)) {
-                continue;
-            }
-            const QColor c = image.pixelColor(p);
-            best = std::min(best, std::max({std::abs(c.red() - target.red()),
-                                            std::abs(c.green() - target.green()),
-                                            std::abs(c.blue() - target.blue())}));
-        }
-    }
-    return best;
-}
+using testing::nearest_colour_distance;
+using testing::render;
 
 QColor pixel_at(const QImage& image, const QPointF& point) {
     const double ratio = image.devicePixelRatio();

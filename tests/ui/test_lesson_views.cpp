@@ -24,6 +24,7 @@
 #include "legofeup/ui/panels/config_panel.hpp"
 #include "legofeup/ui/plots/plots_panel.hpp"
 #include "legofeup/ui/session/session.hpp"
+#include "support/arena_pixels.hpp"
 #include "support/lockstep_history.hpp"
 
 namespace legofeup::ui {
@@ -141,29 +142,8 @@ RunHistory sensor_history() {
     return history;
 }
 
-QImage render(ArenaView& view) {
-    return view.grab().toImage().convertToFormat(QImage::Format_ARGB32);
-}
-
-/// The smallest colour distance to `target` among the pixels within 1 px of `point`.
-int nearest_colour_distance(const QImage& image, const QPointF& point, const QColor& target) {
-    const double ratio = image.devicePixelRatio();
-    int best = 1000;
-    for (int dx = -1; dx <= 1; ++dx) {
-        for (int dy = -1; dy <= 1; ++dy) {
-            const QPoint p(static_cast<int>(std::floor(point.x() * ratio)) + dx,
-                           static_cast<int>(std::floor(point.y() * ratio)) + dy);
-            if (!image.rect().contains(p)) {
-                continue;
-            }
-            const QColor c = image.pixelColor(p);
-            best = std::min(best, std::max({std::abs(c.red() - target.red()),
-                                            std::abs(c.green() - target.green()),
-                                            std::abs(c.blue() - target.blue())}));
-        }
-    }
-    return best;
-}
+using testing::nearest_colour_distance;
+using testing::render;
 
 /// `over` painted with `alpha` on top of `under`.
 QColor blend(const QColor& over, int alpha, const QColor& under) {
