@@ -19,25 +19,12 @@
 #include "legofeup/lessons/map_file.hpp"
 #include "legofeup/lessons/run_config.hpp"
 #include "legofeup/lessons/world_file.hpp"
+#include "scratch_dir_test_support.hpp"
 
 namespace legofeup::lessons {
 namespace {
 
-namespace fs = std::filesystem;
-
-fs::path temp_dir() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path dir = fs::temp_directory_path()
-                         / ("legofeup_laser_config_tests_" + std::to_string(::getpid()))
-                         / (std::string(test->test_suite_name()) + "." + test->name());
-    fs::create_directories(dir);
-    return dir;
-}
-
-void write_file(const fs::path& path, const std::string& bytes) {
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << bytes;
-}
+using namespace scratch_testing;
 
 std::vector<InputProblem> problems_of(const std::function<void()>& action) {
     try {
@@ -110,6 +97,10 @@ TEST(WorldMap, ASurveyedMapIsReadBesideTheWorldsMapAndGoesToTheFilter) {
     const fs::path dir = temp_dir();
     write_room_map(dir / "room.yaml");
     write_room_map(dir / "survey" / "room.yaml");
+    // The survey placed the room 0.1 m further west than it stands.
+    write_file(dir / "survey" / "room.yaml",
+               "image: room.pgm\nresolution: 0.5\norigin: [-2.1, -1.5, 0.0]\n"
+               "occupied_thresh: 0.65\nfree_thresh: 0.196\nnegate: 0\n");
     write_file(dir / "world.toml",
                "[start]\nx = 0.25\ny = 0.25\n[map]\nfile = \"room.yaml\"\n"
                "surveyed = \"survey/room.yaml\"\n");
@@ -122,7 +113,9 @@ TEST(WorldMap, ASurveyedMapIsReadBesideTheWorldsMapAndGoesToTheFilter) {
     RunConfig config;
     config.world_file = (dir / "world.toml").string();
     config.lesson.localisation = Localisation::Laser;
-    EXPECT_EQ(resolve(config).loop.map->cells(), world.surveyed_map->cells());
+    EXPECT_EQ(world.map->origin().x, -2.0);
+    EXPECT_EQ(world.surveyed_map->origin().x, -2.1);
+    EXPECT_EQ(resolve(config).loop.map->origin().x, -2.1);  // the survey, not the world
 
     // Without file, or with an unusable survey: errors at the world's lines.
     auto problems =
