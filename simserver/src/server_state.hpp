@@ -35,7 +35,6 @@ struct SimServer::State {
     // --- control requests (control_requests.cpp)
     comms::ControlReplyPacket carry_out(const comms::ControlRequestPacket& request,
                                         Clock::time_point now);
-    std::string check_pose_in_arena(const Pose2& pose) const;
     void restart_clock(Clock::time_point now);
 
     sim::Simulator simulator;
