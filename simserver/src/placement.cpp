@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "legofeup/core/config_issue.hpp"
@@ -49,13 +51,32 @@ bool occupied_cell_within(const OccupancyGrid& grid, const Vector2& point, doubl
     return false;
 }
 
-/// "<request>: x = 1.2 m: the chassis fits in -1.1037 … 1.1037 m": at most 84 bytes, since
-/// %.6g prints any double in at most 13.
+/// `value` to 9 significant digits (%.9g, at most 16 characters), rounded up (`direction`
+/// +1) or down (−1) rather than to the nearest. The box's limits are rounded inwards, so a
+/// printed limit is itself accepted (to the nearest, 0.1063014581 would print as 0.106301458,
+/// just outside; with %.6g's 6 digits 1.10369854 would be 1.1037), and a refused coordinate
+/// outwards, so it never prints inside the printed limits.
+std::string format_rounded(double value, double direction) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    const double printed = std::strtod(text, nullptr);
+    if ((printed - value) * direction < 0.0 && printed != 0.0) {
+        // One unit of the 9th significant digit: 10^(⌊log10 |printed|⌋ − 8) (not past the
+        // largest double, where the nearest is as good as it gets).
+        const double unit = std::pow(10.0, std::floor(std::log10(std::abs(printed))) - 8.0);
+        if (const double rounded = printed + direction * unit; std::isfinite(rounded)) {
+            std::snprintf(text, sizeof text, "%.9g", rounded);
+        }
+    }
+    return text;
+}
+
+/// "<request>: x = 1.2 m: the chassis fits in -1.10369854 … 1.10369854 m": at most 93 bytes.
 std::string outside_box(std::string_view request, char axis, double value, double low,
                         double high) {
-    return std::string(request) + ": " + axis + " = " + format_config_number(value)
-           + " m: the chassis fits in " + format_config_number(low) + " … "
-           + format_config_number(high) + " m";
+    return std::string(request) + ": " + axis + " = "
+           + format_rounded(value, value < low ? -1.0 : 1.0) + " m: the chassis fits in "
+           + format_rounded(low, 1.0) + " … " + format_rounded(high, -1.0) + " m";
 }
 
 /// "<request>: pose (x, y) m is nearer than r m to <what>": at most 93 bytes (r, from chassis

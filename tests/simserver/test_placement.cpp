@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <regex>
+#include <string>
+#include <utility>
 
 #include "legofeup/comms/control_client.hpp"
 #include "legofeup/comms/link_error.hpp"
@@ -76,10 +79,11 @@ TEST(Placement, TheStandardArenasLimitsAreTheDocumentedRule) {
     const sim::WorldSpec& arena = lessons::built_in_world();
     const double reach = documented_reach(sim::RobotSpec{});
     const Box box = documented_box(arena, reach);
-    // The numbers docs/protocol.md and docs/arena.md print: a reach of 0.1063 m and ±1.1037 m.
-    EXPECT_NEAR(reach, 0.1063, 5e-5);
+    // The numbers docs/protocol.md and docs/arena.md print: a reach of 0.106301458 m and
+    // limits of ±1.10369854 m.
+    EXPECT_NEAR(reach, 0.106301458, 1e-9);
     for (const double limit : {-box.low_x, box.high_x, -box.low_y, box.high_y}) {
-        EXPECT_NEAR(limit, 1.1037, 5e-5);
+        EXPECT_NEAR(limit, 1.10369854, 1e-8);
     }
 
     const auto server = start_test_server(20.0);
@@ -106,7 +110,8 @@ TEST(Placement, TheStandardArenasLimitsAreTheDocumentedRule) {
     }
     for (const Pose2 pose :
          {Pose2{0.0, box.low_y - kMargin, 0.0}, Pose2{0.0, box.high_y + kMargin, 0.0}}) {
-        EXPECT_TRUE(refused(control, pose, "the chassis fits in -1.1037 … 1.1037 m")) << pose.y;
+        EXPECT_TRUE(refused(control, pose, "the chassis fits in -1.10369854 … 1.10369854 m"))
+            << pose.y;
     }
     EXPECT_THROW(control.reset(1, Pose2{box.high_x + kMargin, 0.0, 0.0}), comms::LinkError);
 
@@ -127,6 +132,59 @@ TEST(Placement, TheStandardArenasLimitsAreTheDocumentedRule) {
     EXPECT_FALSE(seen->touching_wall);
 }
 
+/// What a refusal prints: "...: x = VALUE m: the chassis fits in LOW … HIGH m".
+struct Printed {
+    double value;
+    double low;
+    double high;
+};
+
+Printed printed_refusal(ControlClient& control, const Pose2& pose) {
+    const comms::ControlReplyPacket reply = control.request([&] {
+        comms::ControlRequestPacket request;
+        request.op = static_cast<std::uint8_t>(comms::ControlOp::Teleport);
+        request.pose = pose;
+        return request;
+    }());
+    std::smatch numbers;
+    if (!std::regex_search(reply.message, numbers,
+                           std::regex("[xy] = (\\S+) m: the chassis fits in (\\S+) … (\\S+) m$"))) {
+        ADD_FAILURE() << "not a refusal naming the limits: '" << reply.message << "'";
+        return {};
+    }
+    return {std::stod(numbers[1].str()), std::stod(numbers[2].str()), std::stod(numbers[3].str())};
+}
+
+// A client (or a person) that takes the limits of a refusal at their word is not refused: they
+// are rounded towards the inside (to 9 digits). In a world whose walls span 0 … 2 m the low
+// limit is r = 0.10630145813 m, which to the nearest (0.106301458) would lie outside. And a
+// refused coordinate a hair outside prints outside the printed limits, not equal to them.
+TEST(Placement, TheLimitsARefusalPrintsAreAccepted) {
+    sim::WorldSpec shifted = lessons::built_in_world();
+    shifted.walls = {{"south", Vector2(0.0, 0.0), Vector2(2.0, 0.0)},
+                     {"north", Vector2(0.0, 2.0), Vector2(2.0, 2.0)}};
+    const double reach = documented_reach(sim::RobotSpec{});
+    ASSERT_LT(std::stod("0.106301458"), documented_box(shifted, reach).low_x);  // the premise
+    for (const sim::WorldSpec& world : {lessons::built_in_world(), shifted}) {
+        SCOPED_TRACE(world.walls.front().name);
+        const Box box = documented_box(world, reach);
+        const double middle_x = 0.5 * (box.low_x + box.high_x);
+        const double middle_y = 0.5 * (box.low_y + box.high_y);
+        const auto server = start_test_server(20.0, {}, world);
+        ControlClient control(loopback(server->ports().control));
+        const Printed x = printed_refusal(control, Pose2{box.high_x + 1e-10, middle_y, 0.0});
+        const Printed y = printed_refusal(control, Pose2{middle_x, box.low_y - 1e-10, 0.0});
+        EXPECT_NEAR(x.low, box.low_x, 1e-8);
+        EXPECT_NEAR(y.high, box.high_y, 1e-8);
+        EXPECT_GT(x.value, x.high);
+        EXPECT_LT(y.value, y.low);
+        for (const Pose2 pose : {Pose2{x.low, middle_y, 0.0}, Pose2{x.high, middle_y, 0.0},
+                                 Pose2{middle_x, y.low, 0.0}, Pose2{middle_x, y.high, 0.0}}) {
+            EXPECT_NO_THROW(control.teleport(pose)) << pose.x << ", " << pose.y;
+        }
+    }
+}
+
 // A world that is a map alone (the office): its extent is the map's, and no occupied cell of
 // the map the simulator uses (as built) may come nearer than the reach.
 TEST(Placement, AMapOnlyWorldKeepsTheChassisClearOfItsOccupiedCells) {
@@ -137,10 +195,12 @@ TEST(Placement, AMapOnlyWorldKeepsTheChassisClearOfItsOccupiedCells) {
     const OccupancyGrid& map = *office->map;
     const double reach = documented_reach(sim::RobotSpec{});
     const Box box = documented_box(*office, reach);
-    // docs/arena.md: 12 m × 8 m from the origin, so x 0.1063 … 11.8937, y 0.1063 … 7.8937.
-    EXPECT_NEAR(box.high_x, 12.0 - 0.1063, 5e-5);
-    EXPECT_NEAR(box.high_y, 8.0 - 0.1063, 5e-5);
-    EXPECT_NEAR(box.low_x, 0.1063, 5e-5);
+    // docs/arena.md: 12 m × 8 m from the origin, so x 0.106301458 … 11.8936985 and
+    // y 0.106301458 … 7.89369854.
+    EXPECT_NEAR(box.low_x, 0.106301458, 1e-9);
+    EXPECT_NEAR(box.high_x, 11.8936985, 1e-7);
+    EXPECT_NEAR(box.low_y, 0.106301458, 1e-9);
+    EXPECT_NEAR(box.high_y, 7.89369854, 1e-8);
     // The premise: at x = 1 m the outer wall along y = 0 is rows 0-4 of 0.02 m cells, so its
     // face is y = 0.10 m, with nothing else occupied within a reach above it.
     ASSERT_DOUBLE_EQ(map.resolution(), 0.02);
