@@ -78,8 +78,8 @@ TEST(TruthStream, OneSequenceNumberPerPeriodSharedByEverySubscriber) {
     send_bare(second, PacketType::TruthSubscribe, 1, truth_port);
     const std::vector<comms::TruthPacket> firsts = receive_truth(first, 300ms);
     const std::vector<comms::TruthPacket> seconds = receive_truth(second, 50ms);
-    ASSERT_GT(firsts.size(), 40U);
-    ASSERT_GT(seconds.size(), 40U);
+    ASSERT_GT(firsts.size(), 20U);
+    ASSERT_GT(seconds.size(), 20U);
     // The second subscriber's first packet, sent at once, is one the first one got as well.
     EXPECT_TRUE(std::any_of(firsts.begin(), firsts.end(), [&](const comms::TruthPacket& p) {
         return p.sequence == seconds.front().sequence && p.truth.time == seconds.front().truth.time;
