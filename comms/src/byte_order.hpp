@@ -11,6 +11,25 @@
 
 namespace legofeup::comms::detail {
 
+/// The longest prefix of `text` of at most `max_bytes` bytes that does not end inside a UTF-8
+/// character: the cut moves back over continuation bytes (0b10xxxxxx), which never start a
+/// character, to the first byte of the character that would not fit. A character has at most
+/// three continuation bytes, so the cut moves back at most three (text that is not UTF-8 is
+/// cut there whatever it holds).
+inline std::string_view utf8_prefix(std::string_view text, std::size_t max_bytes) {
+    if (text.size() <= max_bytes) {
+        return text;
+    }
+    const auto continues_a_character = [&](std::size_t i) {
+        return (static_cast<unsigned char>(text[i]) & 0xC0U) == 0x80U;
+    };
+    std::size_t cut = max_bytes;
+    while (cut > 0 && max_bytes - cut < 3 && continues_a_character(cut)) {
+        --cut;
+    }
+    return text.substr(0, cut);
+}
+
 class ByteWriter {
   public:
     explicit ByteWriter(std::size_t size) : bytes_(size, 0) {}
@@ -26,10 +45,12 @@ class ByteWriter {
         u32(offset, std::bit_cast<std::uint32_t>(value));
     }
     void f64(std::size_t offset, double value) { u64(offset, std::bit_cast<std::uint64_t>(value)); }
-    /// Bytes of `text` (cut to size − 1) followed by NULs up to `size`.
+    /// Bytes of `text` followed by NULs up to `size`. A text longer than size − 1 bytes is
+    /// cut at the last UTF-8 character boundary that fits, so a multi-byte character is
+    /// either sent whole or not at all (docs/protocol.md, "Encoding").
     void text(std::size_t offset, std::string_view text, std::size_t size) {
-        const std::size_t n = std::min(text.size(), size - 1);
-        std::memcpy(bytes_.data() + offset, text.data(), n);
+        const std::string_view fitting = utf8_prefix(text, size - 1);
+        std::memcpy(bytes_.data() + offset, fitting.data(), fitting.size());
     }
 
     std::vector<std::uint8_t> take() { return std::move(bytes_); }

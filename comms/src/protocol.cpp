@@ -63,10 +63,10 @@ constexpr std::uint8_t kPoseGivenBit = 1U << 0;
 
 // Status block of the control reply, at offset 28.
 constexpr std::size_t kStatusOffset = 28;
-constexpr std::size_t kWorldNameSize = 32;
+constexpr std::size_t kWorldNameSize = kWorldNameMaxBytes + 1;  // + the NUL
 constexpr std::size_t kCountersOffset = 136;
 constexpr std::size_t kMessageOffset = 288;
-constexpr std::size_t kMessageSize = 96;
+constexpr std::size_t kMessageSize = kReplyMessageMaxBytes + 1;
 
 /// The counters in wire order: one table for encoding, decoding and counting.
 constexpr std::array kCounterFields = {

@@ -48,17 +48,21 @@ void TruthReceiver::poll(std::chrono::microseconds timeout) {
 std::optional<GroundTruth> TruthReceiver::truth_at(double time) {
     poll();
     const std::uint64_t wanted = to_microseconds(time);
-    std::optional<GroundTruth> before;
-    for (const GroundTruth& truth : recent_) {
-        const std::uint64_t t = to_microseconds(truth.time);
-        if (t == wanted) {
-            return truth;
+    // Newest first. Since the last reset the times only go up (equal times: the newer packet
+    // wins, as after a reset at time 0 or a subscription's first packet); a time that goes up
+    // walking back belongs to the run before a reset, whose times may repeat this run's.
+    std::optional<std::uint64_t> newer;
+    for (auto it = recent_.rbegin(); it != recent_.rend(); ++it) {
+        const std::uint64_t t = to_microseconds(it->time);
+        if (newer && t > *newer) {
+            break;
         }
-        if (t < wanted) {
-            before = truth;
+        if (t <= wanted) {
+            return *it;
         }
+        newer = t;
     }
-    return before;
+    return std::nullopt;
 }
 
 std::optional<GroundTruth> TruthReceiver::latest() const {

@@ -194,8 +194,10 @@ def _text(raw: bytes) -> str:
 
 
 def _text_field(text: str, size: int) -> bytes:
-    """UTF-8 bytes cut to size − 1 (so a NUL always ends it), NUL-padded to size."""
-    return text.encode("utf-8")[: size - 1].ljust(size, b"\0")
+    """UTF-8 bytes cut to size − 1 (so a NUL always ends it) before the first character that
+    would not fit whole, NUL-padded to size."""
+    cut = text.encode("utf-8")[: size - 1]
+    return cut.decode("utf-8", errors="ignore").encode("utf-8").ljust(size, b"\0")
 
 
 def _require_finite(*values: float) -> None:

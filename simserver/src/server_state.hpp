@@ -35,7 +35,6 @@ struct SimServer::State {
     // --- control requests (control_requests.cpp)
     comms::ControlReplyPacket carry_out(const comms::ControlRequestPacket& request,
                                         Clock::time_point now);
-    std::string check_pose_in_arena(const Pose2& pose) const;
     void restart_clock(Clock::time_point now);
 
     sim::Simulator simulator;
@@ -56,6 +55,7 @@ struct SimServer::State {
     bool reset_flag = false;  ///< the next frame is the first since a Reset request
     std::uint32_t frame_sequence = 0;
     std::uint32_t truth_sequence = 0;
+    comms::Bytes latest_truth;  ///< the last GroundTruth sent, for a new subscriber
     std::uint32_t reply_sequence = 0;
 
     Clock::time_point next_step_at;   ///< scaled time: when the next period is due

@@ -53,6 +53,7 @@ SimServer::State::State(sim::WorldSpec world, sim::RobotSpec robot_spec,
       control_socket(options.bind.with_port(port_or_free(options, options.control_port))),
       session(options.peer_timeout) {
     restart_clock(Clock::now());
+    send_truth();  // to nobody yet: the packet a first subscriber gets at once
     publish_status();
 }
 
@@ -111,10 +112,10 @@ void SimServer::State::advance(Clock::time_point now) {
 }
 
 void SimServer::State::send_truth() {
-    comms::TruthPacket packet{++truth_sequence, simulator.ground_truth()};
-    const comms::Bytes bytes = encode(packet);
+    // One packet, one sequence number, for every subscriber (and for none).
+    latest_truth = encode(comms::TruthPacket{++truth_sequence, simulator.ground_truth()});
     subscribers.for_each([&](const comms::Endpoint& to) {
-        truth_socket.send_to(bytes, to);
+        truth_socket.send_to(latest_truth, to);
         ++counters.truth_sent;
     });
 }
@@ -201,7 +202,12 @@ void SimServer::State::on_truth_datagram(const comms::Datagram& datagram, Clock:
     if (error != comms::DecodeError::None) {
         count_decode_error(counters, error);
     } else if (packet.type == PacketType::TruthSubscribe) {
-        subscribers.subscribe(datagram.from, now);
+        // A newcomer gets the latest packet again at once, so a display knows where the robot
+        // is even while time stands still (paused, or lockstep without a client).
+        if (subscribers.subscribe(datagram.from, now) == TruthSubscribers::Outcome::Added) {
+            truth_socket.send_to(latest_truth, datagram.from);
+            ++counters.truth_sent;
+        }
     } else if (packet.type == PacketType::TruthUnsubscribe) {
         subscribers.unsubscribe(datagram.from);
     } else {

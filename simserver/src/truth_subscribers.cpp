@@ -4,19 +4,19 @@
 
 namespace legofeup::simserver {
 
-bool TruthSubscribers::subscribe(const comms::Endpoint& from,
-                                 std::chrono::steady_clock::time_point now) {
+TruthSubscribers::Outcome TruthSubscribers::subscribe(const comms::Endpoint& from,
+                                                      std::chrono::steady_clock::time_point now) {
     const auto it = std::find_if(subscribers_.begin(), subscribers_.end(),
                                  [&](const Subscriber& s) { return s.address == from; });
     if (it != subscribers_.end()) {
         it->until = now + kLease;
-        return true;
+        return Outcome::Renewed;
     }
     if (subscribers_.size() >= kMax) {
-        return false;
+        return Outcome::Full;
     }
     subscribers_.push_back({from, now + kLease});
-    return true;
+    return Outcome::Added;
 }
 
 void TruthSubscribers::unsubscribe(const comms::Endpoint& from) {

@@ -14,8 +14,9 @@ class TruthSubscribers {
     static constexpr std::size_t kMax = 8;
     static constexpr std::chrono::seconds kLease{5};
 
-    /// Adds or renews; false if the list is full.
-    bool subscribe(const comms::Endpoint& from, std::chrono::steady_clock::time_point now);
+    enum class Outcome { Added, Renewed, Full };
+    /// Adds `from` (if there is room) or renews its lease.
+    Outcome subscribe(const comms::Endpoint& from, std::chrono::steady_clock::time_point now);
     void unsubscribe(const comms::Endpoint& from);
     void expire(std::chrono::steady_clock::time_point now);
 

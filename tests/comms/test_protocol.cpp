@@ -615,6 +615,47 @@ TEST(ProtocolRoundTrip, ControlReplyTextsAreCutToTheirFields) {
     expect_counters(decoded.status.counters, packet.status.counters);
 }
 
+// A text too long for its field is cut before the character that would not fit whole, never
+// inside it: what arrives is valid UTF-8. The characters' bytes are written out by hand.
+TEST(ProtocolRoundTrip, ControlReplyTextsAreCutAtACharacterBoundary) {
+    const std::string ellipsis = "\xE2\x80\xA6";      // U+2026 "…", 3 bytes
+    const std::string e_acute = "\xC3\xA9";           // U+00E9 "é", 2 bytes
+    const std::string grinning = "\xF0\x9F\x98\x80";  // U+1F600, 4 bytes
+    struct Case {
+        std::string text;
+        std::string arrives;
+    };
+    const std::string m94(94, 'm');
+    const std::vector<Case> messages = {
+        {m94 + ellipsis, m94},  // bytes 94-96: dropped whole
+        {std::string(93, 'm') + e_acute, std::string(93, 'm') + e_acute},  // 95 bytes: fits
+        {m94 + e_acute, m94},                                     // bytes 94-95: dropped whole
+        {std::string(92, 'm') + grinning, std::string(92, 'm')},  // bytes 92-95: dropped
+        {std::string(91, 'm') + grinning, std::string(91, 'm') + grinning},  // 95: fits
+        {std::string(95, 'm') + e_acute, std::string(95, 'm')},              // the cut is the limit
+        {std::string(30, 'm') + ellipsis + ellipsis, std::string(30, 'm') + ellipsis + ellipsis},
+    };
+    for (const Case& message : messages) {
+        ControlReplyPacket packet = sample_reply();
+        packet.message = message.text;
+        const Bytes bytes = encode(packet);
+        ASSERT_EQ(bytes.size(), 384U);
+        EXPECT_EQ(bytes[288 + message.arrives.size()], 0) << "the NUL after the kept text";
+        ControlReplyPacket decoded;
+        ASSERT_EQ(decode(bytes, decoded), DecodeError::None);
+        EXPECT_EQ(decoded.message, message.arrives) << message.text.size() << " bytes sent";
+    }
+    // The world name's field: 31 bytes of text.
+    ControlReplyPacket packet = sample_reply();
+    packet.status.world_name = std::string(30, 'w') + e_acute;  // bytes 30-31: dropped whole
+    ControlReplyPacket decoded;
+    ASSERT_EQ(decode(encode(packet), decoded), DecodeError::None);
+    EXPECT_EQ(decoded.status.world_name, std::string(30, 'w'));
+    packet.status.world_name = std::string(29, 'w') + e_acute;  // 31 bytes: fits
+    ASSERT_EQ(decode(encode(packet), decoded), DecodeError::None);
+    EXPECT_EQ(decoded.status.world_name, std::string(29, 'w') + e_acute);
+}
+
 TEST(ProtocolRoundTrip, TimesSurviveForWholeMicroseconds) {
     for (const double time : {0.0, 1e-6, 0.05, 1.25, 22.45, 3600.000001, 1e9}) {
         BarePacket packet{PacketType::Connect, 1, time};

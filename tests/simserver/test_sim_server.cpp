@@ -197,26 +197,6 @@ TEST(SimServer, RefusesANonLoopbackBindUnlessAllowed) {
                                          sim::SimulatorSettings{}, 1, options));
 }
 
-// A world that is a map alone (the office): its extent is the map's, and a pose inside an
-// occupied cell (a wall, a desk) is refused.
-TEST(SimServer, TeleportsWithinAMapOnlyWorld) {
-    const sim::WorldSpec* office = lessons::find_built_in_world("office");
-    ASSERT_NE(office, nullptr);
-    ASSERT_TRUE(office->walls.empty());
-    const auto server = start_test_server(20.0, {}, *office);
-    ControlClient control(loopback(server->ports().control));
-    EXPECT_NO_THROW(control.reset(3, office->start));
-    EXPECT_NO_THROW(control.teleport(Pose2{9.9, 0.8, 0.0}));                  // the twin hall
-    EXPECT_THROW(control.teleport(Pose2{30.0, 0.8, 0.0}), comms::LinkError);  // off the map
-    // The outer wall along y = 0 is occupied: cell row 0 and 1 at 0.05 m.
-    try {
-        control.teleport(Pose2{3.0, 0.025, 0.0});
-        FAIL() << "teleported into a wall";
-    } catch (const comms::LinkError& error) {
-        EXPECT_NE(std::string(error.what()).find("occupied"), std::string::npos) << error.what();
-    }
-}
-
 TEST(SimServer, ResetPauseResumeTeleportAndNoiseRequests) {
     const auto server = start_test_server(20.0);
     ControlClient control(loopback(server->ports().control));
@@ -274,20 +254,14 @@ TEST(SimServer, ResetPauseResumeTeleportAndNoiseRequests) {
     ASSERT_TRUE(moved);
     EXPECT_NEAR(moved->pose.x, -0.5, 0.01);
     EXPECT_NEAR(moved->pose.y, 0.75, 0.01);
+    // (test_placement.cpp checks the limits.)
     try {
         control.teleport(Pose2{5.0, 0.0, 0.0});
         FAIL() << "teleported outside the arena";
     } catch (const comms::LinkError& error) {
-        EXPECT_NE(std::string(error.what()).find("outside the arena"), std::string::npos)
+        EXPECT_NE(std::string(error.what()).find("x = 5 m: the chassis fits in"), std::string::npos)
             << error.what();
     }
-    // Every side of the arena, and inside the walls but too close for the chassis (the
-    // walls are at ±1.21 m; the chassis reaches 0.106 m from the axle).
-    for (const Pose2 pose : {Pose2{-5.0, 0.0, 0.0}, Pose2{0.0, 5.0, 0.0}, Pose2{0.0, -5.0, 0.0},
-                             Pose2{-1.15, 0.0, 0.0}, Pose2{0.0, 1.15, 0.0}}) {
-        EXPECT_THROW(control.teleport(pose), comms::LinkError) << pose.x << ", " << pose.y;
-    }
-    EXPECT_NO_THROW(control.teleport(Pose2{-1.0, 1.0, 0.0}));
 
     // Noise: validated by the simulator's own rules, with the field named.
     comms::NoiseSettings noise{1.01, 1.02, 0.001, 0.004};

@@ -234,6 +234,11 @@ struct ServerCounters {
 /// Adds one to the counter for a decode error (None adds nothing).
 void count_decode_error(ServerCounters& counters, DecodeError error);
 
+/// The longest texts a control reply carries: its NUL-padded fields are one byte longer. A
+/// longer text is cut at the last UTF-8 character boundary that fits.
+inline constexpr std::size_t kWorldNameMaxBytes = 31;
+inline constexpr std::size_t kReplyMessageMaxBytes = 95;
+
 struct ServerStatus {
     std::uint64_t steps = 0;  ///< control periods since the last reset
     double control_period = 0.0;
@@ -244,7 +249,7 @@ struct ServerStatus {
     bool watchdog_stopped = false;
     bool client_connected = false;
     Endpoint client;
-    std::string world_name;  ///< at most 31 bytes travel
+    std::string world_name;  ///< at most kWorldNameMaxBytes travel
     ServerCounters counters;
 };
 
@@ -255,7 +260,7 @@ struct ControlReplyPacket {
     std::uint8_t op = 0;
     ControlResult result = ControlResult::Ok;
     ServerStatus status;  ///< after the request was carried out
-    std::string message;  ///< why it was rejected (at most 95 bytes travel)
+    std::string message;  ///< why it was rejected (at most kReplyMessageMaxBytes travel)
 };
 
 // --- Encoding: each returns exactly packet_size(type) bytes (a sensor frame: frame_size()). ---

@@ -25,7 +25,8 @@ class TruthReceiver final : public TruthSource {
     void poll(std::chrono::microseconds timeout = std::chrono::microseconds(0));
 
     /// The truth at exactly `time` (to the microsecond) if it arrived, else the newest one
-    /// before it; nullopt if none did. Polls first.
+    /// before it; nullopt if none did. Only packets since the last reset count (times restart
+    /// at 0 there). Polls first.
     std::optional<GroundTruth> truth_at(double time) override;
     std::optional<GroundTruth> latest() const;
 
