@@ -30,6 +30,7 @@
 #include "legofeup/ui/window/main_window.hpp"
 #include "support/modal.hpp"
 #include "support/screenshot.hpp"
+#include "support/short_run.hpp"
 
 using namespace legofeup;
 using namespace legofeup::ui;
@@ -38,13 +39,7 @@ namespace {
 
 constexpr int kPatienceMs = 30000;
 
-/// A step's preset cut short: a straight line for 3 simulated seconds (0.3 s at 10×), so a
-/// test sees a whole run — finished routine, outcome, conclusion — in well under a second.
-lessons::RunConfig short_run(lessons::RunConfig config) {
-    config.routine.kind = lessons::RoutineSpec::Kind::Line;
-    config.duration = 3.0;
-    return config;
-}
+using testing::short_run;
 
 void write_file(const QString& path, const QByteArray& text) {
     QFile file(path);

@@ -4,3 +4,6 @@ legofeup_add_ui_test(ui_main_window_test test_main_window.cpp)
 legofeup_add_ui_test(ui_connect_dialog_test test_connect_dialog.cpp)
 # The real-robot path in the window: the emulated brick, the link's status, reconnecting.
 legofeup_add_ui_test(ui_nxt_window_test test_nxt_window.cpp)
+# legofeup's command line (read before any window) and the window it starts.
+legofeup_add_ui_gtest(ui_command_line_test test_command_line.cpp)
+legofeup_add_ui_test(ui_start_up_test test_start_up.cpp)

@@ -22,6 +22,7 @@
 #include "legofeup/report/student_report.hpp"
 #include "legofeup/ui/lesson/answers_store.hpp"
 #include "legofeup/ui/lesson/lesson_progress.hpp"
+#include "legofeup/ui/lesson/step_membership.hpp"
 #include "legofeup/ui/lesson/step_run_tracker.hpp"
 #include "legofeup/ui/lesson/step_view.hpp"
 #include "legofeup/ui/session/session.hpp"
@@ -83,6 +84,13 @@ LessonPanel::LessonPanel(Session& session, QWidget* parent) : QWidget(parent), s
     names->addRow(tr("Students:"), students_);
     layout->addLayout(names);
 
+    // Shown only when the configuration is not the selected step's: its runs count for none.
+    configuration_owner_ = new QLabel(this);
+    configuration_owner_->setObjectName(QStringLiteral("configurationOwner"));
+    configuration_owner_->setWordWrap(true);
+    configuration_owner_->hide();
+    layout->addWidget(configuration_owner_);
+
     // The steps above, the selected one below; the students drag the divide as they like.
     auto* split = new QSplitter(Qt::Vertical, this);
     steps_ = new QListWidget(split);
@@ -131,6 +139,7 @@ LessonPanel::LessonPanel(Session& session, QWidget* parent) : QWidget(parent), s
                 answersEdited();
             });
     connect(step_view_, &StepView::applyAndRunRequested, this, &LessonPanel::applyAndRun);
+    connect(&session_, &Session::configChanged, this, &LessonPanel::refreshConfigurationOwner);
 
     const auto refresh_step = [this](const QString& id) {
         refreshList();
@@ -257,10 +266,62 @@ void LessonPanel::stepChosen(int row) {
     const lessons::LessonStep& step = progress_->lesson().steps[static_cast<std::size_t>(row)];
     step_view_->showStep(step, *progress_);
     tracker_->setStep(progress_->sharedLesson(), step.id);
+    refreshConfigurationOwner();
     step_view_->setNote(
         session_.running()
             ? tr("A run is going: it counts for the step that was shown when it started.")
             : tr("Apply preset & run starts this step. You may tune it while it runs."));
+}
+
+void LessonPanel::refreshConfigurationOwner() {
+    const lessons::LessonStep* shown = progress_->lesson().find_step(step_view_->stepId());
+    const std::vector<std::string> differing =
+        shown == nullptr ? std::vector<std::string>{}
+                         : experiment_differences(session_.config(), *shown);
+    configuration_owner_->setVisible(!differing.empty());
+    if (differing.empty()) {
+        configuration_owner_->clear();
+        return;
+    }
+    QStringList keys;
+    for (const std::string& key : differing) {
+        keys << QString::fromStdString(key);
+    }
+    const QString id = QString::fromStdString(shown->id);
+    const StepOfConfiguration own =
+        step_of_configuration(session_.config(), {&progress_->lesson()});
+    configuration_owner_->setText(
+        own.step != nullptr
+            ? tr("The configuration is step %1's, not step %2's (it differs from its preset in "
+                 "%3): its runs count for no step while step %2 is shown.")
+                  .arg(QString::fromStdString(own.step->id), id, keys.join(QStringLiteral(", ")))
+            : tr("Own configuration: it differs from step %1's preset in %2, so its runs count "
+                 "for no step. Apply preset & run runs step %1.")
+                  .arg(id, keys.join(QStringLiteral(", "))));
+}
+
+bool LessonPanel::showStepOfConfiguration(const QString& preferred) {
+    const lessons::RunConfig& config = session_.config();
+    if (const lessons::LessonStep* step = progress_->lesson().find_step(preferred.toStdString());
+        step != nullptr && is_step_configuration(config, *step)) {
+        return showStep(preferred);
+    }
+    // This lesson first, then the built-in ones (the same one once).
+    std::vector<const lessons::Lesson*> candidates = {&progress_->lesson()};
+    for (const lessons::BuiltInLesson& built_in : lessons::built_in_lessons()) {
+        if (built_in_key(built_in.id) != lesson_file_) {
+            candidates.push_back(lessons::find_built_in_lesson(built_in.id));
+        }
+    }
+    const StepOfConfiguration found = step_of_configuration(config, candidates);
+    if (found.step == nullptr) {
+        showStep(preferred);  // or the step shown stays; either says "own configuration"
+        return false;
+    }
+    if (found.lesson != &progress_->lesson()) {
+        useBuiltInLesson(QString::fromStdString(found.lesson->id));
+    }
+    return showStep(QString::fromStdString(found.step->id));
 }
 
 bool LessonPanel::showStep(const QString& id) {

@@ -5,6 +5,7 @@ list(APPEND LEGOFEUP_UI_SOURCES
     lesson/lesson_actions.cpp
     lesson/lesson_panel.cpp
     lesson/lesson_progress.cpp
+    lesson/step_membership.cpp
     lesson/step_run_tracker.cpp
     lesson/step_view.cpp
     include/legofeup/ui/lesson/lesson_actions.hpp  # Q_OBJECT: listed for AUTOMOC

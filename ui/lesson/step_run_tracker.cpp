@@ -3,6 +3,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 
+#include "legofeup/ui/lesson/step_membership.hpp"
 #include "legofeup/ui/session/session.hpp"
 
 namespace legofeup::ui {
@@ -29,6 +30,10 @@ void StepRunTracker::setStep(std::shared_ptr<const lessons::Lesson> lesson,
     selected_ = step_id;
 }
 
+const lessons::LessonStep* StepRunTracker::selectedStep() const {
+    return lesson_ == nullptr ? nullptr : lesson_->find_step(selected_);
+}
+
 void StepRunTracker::abandonRun() {
     if (!running_.empty()) {
         emit stepAbandoned(QString::fromStdString(running_));
@@ -40,7 +45,8 @@ void StepRunTracker::phaseChanged(RunPhase phase) {
     switch (phase) {
         case RunPhase::Connecting:
             abandonRun();  // a new run replaces one that had not finished
-            if (lesson_ != nullptr && lesson_->find_step(selected_) != nullptr) {
+            if (const lessons::LessonStep* step = selectedStep();
+                step != nullptr && is_step_configuration(session_.config(), *step)) {
                 running_ = selected_;
                 emit stepStarted(QString::fromStdString(running_));
             }
@@ -51,6 +57,10 @@ void StepRunTracker::phaseChanged(RunPhase phase) {
         case RunPhase::Finished:
             if (const lessons::LessonStep* step =
                     lesson_ == nullptr ? nullptr : lesson_->find_step(running_)) {
+                if (!is_step_configuration(session_.config(), *step)) {
+                    abandonRun();  // changed while running into another experiment
+                    return;
+                }
                 running_.clear();
                 check(*step);
             }

@@ -15,7 +15,10 @@ LinkChoice saved_link_choice() {
     choice.kind = static_cast<LinkKind>(
         std::clamp(preferences::kLinkKind.read(), 0, static_cast<int>(LinkKind::Nxt)));
     choice.address = preferences::kLinkAddress.read();
-    choice.speed = preferences::kSimulatorSpeed.read();
+    // A speed edited by hand into something the simulator refuses: the default instead.
+    if (const double speed = preferences::kSimulatorSpeed.read(); is_simulator_speed(speed)) {
+        choice.speed = speed;
+    }
     choice.nxt_address = preferences::kNxtAddress.read();
     choice.relay = preferences::kNxtRelay.read();
     choice.robot_profile = preferences::kNxtProfile.read();

@@ -15,7 +15,13 @@
 namespace legofeup::ui {
 namespace {
 
+/// The speeds the box always offers; any other the session runs at (--speed 4, a speed
+/// saved before) is added in order (selectSpeed()).
 constexpr std::array kSpeeds = {0.5, 1.0, 2.0, 5.0, 10.0};
+
+QString speed_label(double speed) {
+    return QStringLiteral("%1×").arg(speed);
+}
 
 }  // namespace
 
@@ -76,9 +82,9 @@ RunToolBar::RunToolBar(Session& session, QWidget* parent)
     speed_->setObjectName(QStringLiteral("simulatorSpeed"));
     speed_->setToolTip(tr("Simulated seconds per real second (applies at the next start)"));
     for (const double speed : kSpeeds) {
-        speed_->addItem(QStringLiteral("%1×").arg(speed), speed);
+        speed_->addItem(speed_label(speed), speed);
     }
-    speed_->setCurrentIndex(std::max(0, speed_->findData(session_.linkChoice().speed)));
+    selectSpeed(session_.linkChoice().speed);
     speed_action_ = addWidget(speed_);
     connect_ = new QAction(tr("&Connect to an NXT…"), this);
     connect_->setObjectName(QStringLiteral("connectNxt"));
@@ -124,13 +130,25 @@ void RunToolBar::linkEdited() {
     showLinkFields();
 }
 
+void RunToolBar::selectSpeed(double speed) {
+    int index = speed_->findData(speed);
+    if (index < 0) {
+        index = 0;
+        while (index < speed_->count() && speed_->itemData(index).toDouble() < speed) {
+            ++index;
+        }
+        speed_->insertItem(index, speed_label(speed), speed);
+    }
+    speed_->setCurrentIndex(index);
+}
+
 void RunToolBar::showLinkFields() {
     const LinkChoice& choice = session_.linkChoice();
     {
         const QSignalBlocker block_link(link_);
         const QSignalBlocker block_speed(speed_);
         link_->setCurrentIndex(static_cast<int>(choice.kind));
-        speed_->setCurrentIndex(std::max(0, speed_->findData(choice.speed)));
+        selectSpeed(choice.speed);
         if (address_->text().trimmed() != choice.address) {
             address_->setText(choice.address);
         }

@@ -1,15 +1,19 @@
 # The window: docks, menus, the run's toolbar and the NXT connect dialog (with its Bluetooth
-# scan), keyboard driving, kidnapping the simulated robot, files, appearance, settings.
+# scan), keyboard driving, kidnapping the simulated robot, files, appearance, settings; the
+# command line, the display check and what the window starts with.
 list(APPEND LEGOFEUP_UI_SOURCES
     window/app_settings.cpp
     window/appearance.cpp
     window/bluetooth_scan.cpp
+    window/command_line.cpp
     window/connect_dialog.cpp
+    window/display_check.cpp
     window/file_actions.cpp
     window/keyboard_driver.cpp
     window/kidnap_action.cpp
     window/main_window.cpp
     window/run_toolbar.cpp
+    window/start_up.cpp
     include/legofeup/ui/window/bluetooth_scan.hpp  # Q_OBJECT: listed for AUTOMOC
     include/legofeup/ui/window/connect_dialog.hpp  # Q_OBJECT: listed for AUTOMOC
     include/legofeup/ui/window/file_actions.hpp  # Q_OBJECT: listed for AUTOMOC

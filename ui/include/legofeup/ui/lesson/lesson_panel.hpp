@@ -41,6 +41,12 @@ class LessonPanel : public QWidget {
 
     /// Shows step `id` without touching the configuration. False for an unknown id.
     bool showStep(const QString& id);
+    /// Shows the step the session's configuration is (step_membership.hpp): `preferred` of this
+    /// lesson if it is that step's, else the step it came from — of this lesson or another
+    /// built-in one, switching to it. False when it is no step's: `preferred` (or the step
+    /// shown) is shown with the note that the configuration is the students' own and its runs
+    /// count for no step.
+    bool showStepOfConfiguration(const QString& preferred);
     /// Shows step `id` and applies its preset (no run). False for an unknown id or a refused
     /// preset (the note says why).
     bool selectStep(const QString& id);
@@ -85,6 +91,8 @@ class LessonPanel : public QWidget {
     void refreshList();
     void stepChosen(int row);
     void answersEdited();
+    /// Says, when it is so, that the configuration is not the shown step's.
+    void refreshConfigurationOwner();
 
     Session& session_;
     std::unique_ptr<LessonProgress> progress_;
@@ -93,6 +101,7 @@ class LessonPanel : public QWidget {
     QComboBox* lesson_choice_ = nullptr;
     QLabel* lesson_title_ = nullptr;
     QLineEdit* students_ = nullptr;
+    QLabel* configuration_owner_ = nullptr;
     QListWidget* steps_ = nullptr;
     StepView* step_view_ = nullptr;
     QTimer* autosave_ = nullptr;

@@ -1,13 +1,15 @@
 #pragma once
 // Which lesson step a live run belongs to, and what the step gave once the run finished.
 //
-// A run belongs to the step selected when it started. When its routine finishes (all laps
-// driven), the step's outcome — metrics, automatic checks, plots — comes from
-// report::run_step with the configuration as run (the preset as the students tuned it,
-// with its seed): a deterministic lockstep re-run, headless, so the lesson panel and the
-// report show the numbers `legofeup-cli report` would. It runs on a worker thread
-// (QtConcurrent): a fraction of a second, but never on the GUI thread. A run stopped, failed
-// or reset before its end does not count.
+// A run belongs to the step selected when it started, if its configuration is that step's
+// (step_membership.hpp: the step's preset, tuned; not another lesson's experiment). When its
+// routine finishes (all laps driven) with the configuration still the step's, the step's
+// outcome — metrics, automatic checks, plots — comes from report::run_step with the
+// configuration as run (the preset as the students tuned it, with its seed): a deterministic
+// lockstep re-run, headless, so the lesson panel and the report show the numbers
+// `legofeup-cli report` would. It runs on a worker thread (QtConcurrent): a fraction of a
+// second, but never on the GUI thread. A run stopped, failed or reset before its end does
+// not count, nor does a run of a configuration that is no step's.
 
 #include <QFutureWatcher>
 #include <QObject>
@@ -33,6 +35,8 @@ class StepRunTracker : public QObject {
     /// The lesson and its step the next run belongs to. A new lesson forgets the run going
     /// (and an outcome being computed for the old one).
     void setStep(std::shared_ptr<const lessons::Lesson> lesson, const std::string& step_id);
+    /// The step the next run belongs to if its configuration is the step's; nullptr if none.
+    const lessons::LessonStep* selectedStep() const;
     /// The step whose live run is going; empty if none.
     const std::string& runningStep() const { return running_; }
     /// How many outcomes are being computed.

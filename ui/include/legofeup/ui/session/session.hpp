@@ -45,7 +45,7 @@ enum class LinkKind : std::uint8_t { Embedded, External, Nxt };
 struct LinkChoice {
     LinkKind kind = LinkKind::Embedded;
     QString address = QStringLiteral("udp://127.0.0.1:5600");  ///< External: the robot port
-    double speed = 1.0;  ///< Embedded: simulated seconds per real second
+    double speed = 1.0;  ///< Embedded: simulated seconds per real second (is_simulator_speed)
     /// Nxt: the brick's address as typed (see nxt_address.hpp; a bare XX:XX:… is bt:).
     QString nxt_address;
     bool relay = false;     ///< Nxt: the relay program on the brick (docs/nxt.md)
@@ -54,6 +54,17 @@ struct LinkChoice {
     /// through the whole NXT path over loopback TCP, with the simulator's ground truth.
     bool emulated = false;
 };
+
+/// The embedded simulator's speeds, simulated seconds per real second: the time scales
+/// simserver::validate() accepts, without its 0 (lockstep, as fast as the loop answers),
+/// which is no speed to watch a run at.
+inline constexpr double kMinSimulatorSpeed = 0.05;
+inline constexpr double kMaxSimulatorSpeed = 1000.0;
+
+/// Whether the embedded simulator runs at `speed` (a finite number in the range above).
+constexpr bool is_simulator_speed(double speed) {
+    return speed >= kMinSimulatorSpeed && speed <= kMaxSimulatorSpeed;  // false for NaN
+}
 
 class Session : public QObject {
     Q_OBJECT

@@ -47,6 +47,8 @@ class RunToolBar : public QToolBar {
     void phaseChanged(RunPhase phase);
     void linkEdited();
     void showLinkFields();
+    /// Selects `speed` in the speed box, adding it in order when the box lacks it.
+    void selectSpeed(double speed);
 
     Session& session_;
     QAction* start_ = nullptr;
