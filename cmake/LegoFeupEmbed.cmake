@@ -42,5 +42,5 @@ function(legofeup_embed_binary target file variable header)
     file(READ "${file}" hex HEX)
     string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")
     _legofeup_embed(${target} "${file}" "${variable}" "${header}"
-        "namespace {\nconst unsigned char kBytes[] = {${bytes}};\n}\nconst std::string_view @NAME@(reinterpret_cast<const char*>(kBytes), sizeof kBytes);\n")
+        "namespace {\nconst unsigned char @NAME@Bytes[] = {${bytes}};\n}\nconst std::string_view @NAME@(reinterpret_cast<const char*>(@NAME@Bytes), sizeof @NAME@Bytes);\n")
 endfunction()

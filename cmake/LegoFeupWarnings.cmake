@@ -19,6 +19,13 @@ function(legofeup_enable_warnings target)
     if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
         target_compile_options(${target} PRIVATE -Wno-restrict)
     endif()
+    # In a unity build a source file is #included into the batch's translation unit, so GCC
+    # takes a class defined in it for one defined in a header and warns when the class holds
+    # a type from the file's anonymous namespace. Each source is still included exactly
+    # once, so the one-definition rule the warning protects cannot be broken this way.
+    if(LEGOFEUP_UNITY_BUILD AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+        target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
+    endif()
     if(LEGOFEUP_WARNINGS_AS_ERRORS)
         target_compile_options(${target} PRIVATE -Werror)
     endif()

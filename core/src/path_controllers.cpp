@@ -22,11 +22,6 @@ double heading_of(const Vector2& v) {
     return std::atan2(v.y(), v.x());
 }
 
-// z-component of a × b: positive when b is to the left of a.
-double cross(const Vector2& a, const Vector2& b) {
-    return a.x() * b.y() - a.y() * b.x();
-}
-
 }  // namespace
 
 ControlOutput GoXYTheta::step(const Pose2& estimate, const MotionLimits& limits,

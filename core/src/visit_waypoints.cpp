@@ -16,11 +16,6 @@ constexpr double kPauseClockSlack = 1e-9;
 // A leg shorter than this has no direction of its own; aim straight at the waypoint.
 constexpr double kMinLegLength = 1e-9;
 
-// z-component of a × b: positive when b is to the left of a.
-double cross(const Vector2& a, const Vector2& b) {
-    return a.x() * b.y() - a.y() * b.x();
-}
-
 struct LegGeometry {
     Vector2 direction;  // u
     double length;      // |p_k − p_{k−1}|

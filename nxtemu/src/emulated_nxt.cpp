@@ -22,7 +22,6 @@ namespace nxt = comms::nxt;
 using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 
-constexpr std::uint32_t kLoopback = 0x7F000001;
 constexpr std::uint32_t kAnyAddress = 0;
 constexpr auto kAcceptPoll = 200ms;
 constexpr double kDegreesPerSecondPerRpm = 6.0;
@@ -198,7 +197,7 @@ std::uint16_t EmulatedNxt::serve_tcp(std::uint16_t port, bool allow_remote) {
     State& s = *state_;
     const std::lock_guard lock(s.stop_mutex);
     auto listener =
-        std::make_unique<nxt::TcpListener>(allow_remote ? kAnyAddress : kLoopback, port);
+        std::make_unique<nxt::TcpListener>(allow_remote ? kAnyAddress : comms::kLoopbackAddress, port);
     const std::uint16_t bound = listener->port();
     nxt::TcpListener& serving = *listener;
     s.listeners.push_back(std::move(listener));

@@ -12,12 +12,11 @@
 namespace legofeup::nxtemu {
 namespace {
 
-constexpr std::uint32_t kLoopback = 0x7F000001;
 constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
 simserver::SimServerOptions server_options() {
     simserver::SimServerOptions options;
-    options.bind = comms::Endpoint{kLoopback, 0};  // free ports for all three streams
+    options.bind = comms::Endpoint{comms::kLoopbackAddress, 0};  // free ports for all three streams
     options.truth_port = 0;
     options.control_port = 0;
     options.time_scale = 1.0;  // a brick lives in real time
@@ -55,7 +54,7 @@ struct SimulatedHardware::State {
         check_wiring(wiring);
         server.start();
         const simserver::BoundPorts ports = server.ports();
-        const comms::Endpoint robot{kLoopback, ports.robot};
+        const comms::Endpoint robot{comms::kLoopbackAddress, ports.robot};
         connection = std::make_unique<lessons::UdpRobotConnection>(
             run, lessons::UdpTarget{robot, robot.with_port(ports.truth),
                                     robot.with_port(ports.control)});
@@ -162,7 +161,7 @@ simserver::BoundPorts SimulatedHardware::simulator_ports() const {
 }
 
 comms::Endpoint SimulatedHardware::truth_endpoint() const {
-    return {kLoopback, state_->server.ports().truth};
+    return {comms::kLoopbackAddress, state_->server.ports().truth};
 }
 
 std::uint64_t SimulatedHardware::frames() const {

@@ -279,7 +279,7 @@ std::optional<LiveRun::ConnectionFactory> Session::prepareConnection() {
         // The embedded simulator: a fresh server per run, on free loopback ports, so it
         // always has this run's world, robot and timing.
         simserver::SimServerOptions options;
-        options.bind = comms::Endpoint{0x7F000001, 0};
+        options.bind = comms::Endpoint{comms::kLoopbackAddress, 0};
         options.time_scale = link_.speed;
         try {
             embedded_ = std::make_unique<simserver::SimServer>(resolved_.world, resolved_.robot,

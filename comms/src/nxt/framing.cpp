@@ -51,7 +51,7 @@ void write_telegrams(ByteStream& stream, std::span<const Telegram> telegrams) {
 Telegram read_telegram(ByteStream& stream, ByteStream::Clock::time_point deadline) {
     std::array<std::uint8_t, kLengthSize> prefix{};
     stream.read_exact(prefix, deadline);
-    const std::uint16_t length = detail::ByteReader(prefix).u16(0);
+    const std::uint16_t length = comms::detail::ByteReader(prefix).u16(0);
     if (length == 0 || length > kMaxTelegramSize) {
         throw FramingError(stream.describe() + ": frame length " + std::to_string(length)
                            + ", expected 1..64 — the stream is out of step, or the other end "

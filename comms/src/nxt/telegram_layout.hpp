@@ -14,8 +14,8 @@
 
 namespace legofeup::comms::nxt::layout {
 
-using detail::ByteReader;
-using detail::ByteWriter;
+using comms::detail::ByteReader;
+using comms::detail::ByteWriter;
 
 // Every telegram: type · opcode. A reply adds the status byte before its payload.
 inline constexpr std::size_t kType = 0;

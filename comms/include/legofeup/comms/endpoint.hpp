@@ -8,8 +8,11 @@
 
 namespace legofeup::comms {
 
+/// 127.0.0.1 in host order: where every server of the project listens unless told otherwise.
+inline constexpr std::uint32_t kLoopbackAddress = 0x7F000001;
+
 struct Endpoint {
-    std::uint32_t address = 0x7F000001;  ///< IPv4 in host order (127.0.0.1 = 0x7F000001)
+    std::uint32_t address = kLoopbackAddress;  ///< IPv4 in host order
     std::uint16_t port = 0;
 
     bool is_loopback() const { return (address >> 24) == 127; }

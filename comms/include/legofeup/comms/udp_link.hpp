@@ -18,7 +18,7 @@
 namespace legofeup::comms {
 
 struct UdpLinkOptions {
-    Endpoint server{0x7F000001, kDefaultRobotPort};  ///< the robot port
+    Endpoint server{kLoopbackAddress, kDefaultRobotPort};  ///< the robot port
     std::chrono::milliseconds connect_timeout{3000};
     /// How long next_frame() waits; unset: 1.5 control periods at the server's time scale,
     /// or 150 ms in lockstep (the server advances after 100 ms without an answer).

@@ -32,5 +32,9 @@ inline Pose2 to_pose(const StateVector& x) {
 inline Vector2 position_of(const Pose2& pose) {
     return {pose.x, pose.y};
 }
+/// z-component of the 2-D cross product a × b: positive when b is to the left of a.
+inline double cross(const Vector2& a, const Vector2& b) {
+    return a.x() * b.y() - a.y() * b.x();
+}
 
 }  // namespace legofeup

@@ -19,7 +19,7 @@ namespace legofeup::simserver {
 struct SimServerOptions {
     /// The robot port's address; truth and control use the same address. Port 0 picks free
     /// ports for all three streams (tests, and the --ready-file of legofeup-sim).
-    comms::Endpoint bind{0x7F000001, comms::kDefaultRobotPort};
+    comms::Endpoint bind{comms::kLoopbackAddress, comms::kDefaultRobotPort};
     std::uint16_t truth_port = comms::kDefaultTruthPort;
     std::uint16_t control_port = comms::kDefaultControlPort;
     /// Simulated seconds per real second; 0 = lockstep (as fast as the client answers).
