@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
                    "E_b: actual/nominal wheel base");
     app.add_option("--slip-noise", command.robot.slip_noise, "Wheel slip noise, m^1/2");
     app.add_option("--ir-noise", command.robot.ir_noise, "σ of each IR distance, m");
+    app.add_option("--counts-per-turn", command.robot.counts_per_turn,
+                   "Encoder counts a wheel turn in the frames (default 360, the NXT's: 1 count = "
+                   "1°); a client's robot.counts_per_turn must be the same");
     app.add_flag("--allow-remote", command.allow_remote,
                  "Allow a non-loopback --bind (the protocol has no authentication)");
     app.add_option("--ready-file", command.ready_file,

@@ -117,15 +117,16 @@ int run_server(const ServerCommand& command) {
     if (!command.quiet) {
         const comms::ServerStatus status = server->status();
         std::printf(
-            "legofeup-sim: world '%s', seed %llu, control period %g s, %s\n"
+            "legofeup-sim: world '%s', seed %llu, control period %g s, encoders %s counts a "
+            "turn, %s\n"
             "  robot   udp://%s:%u  (sensor frames out, wheel commands in)\n"
             "  truth   udp://%s:%u  (ground truth, for displays and metrics)\n"
             "  control udp://%s:%u  (reset, pause, noise, teleport, status)\n"
             "Ctrl-C stops.\n",
             status.world_name.c_str(), static_cast<unsigned long long>(command.seed),
-            status.control_period, pace(command.time_scale).c_str(), command.bind_address.c_str(),
-            ports.robot, command.bind_address.c_str(), ports.truth, command.bind_address.c_str(),
-            ports.control);
+            status.control_period, format_config_number(command.robot.counts_per_turn).c_str(),
+            pace(command.time_scale).c_str(), command.bind_address.c_str(), ports.robot,
+            command.bind_address.c_str(), ports.truth, command.bind_address.c_str(), ports.control);
         std::fflush(stdout);
     }
     server->start();

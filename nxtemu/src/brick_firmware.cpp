@@ -67,7 +67,7 @@ struct BrickFirmware::State {
             now = time;  // the caller's clock never runs backwards here
         }
         time = now;
-        outputs.update(hardware.motor_degrees());
+        outputs.update(hardware.tacho_counts());
         inputs.update(hardware.adc(), now);
         ProgramDevices program_devices = devices();
         relay.run_until(now, program_devices);

@@ -57,11 +57,11 @@ void OutputPorts::reset_all() {
     ports_ = {};  // coast, regulation off, run forever, every counter and target 0
 }
 
-void OutputPorts::update(const std::array<double, kOutputCount>& degrees) {
+void OutputPorts::update(const std::array<double, kOutputCount>& counts) {
     for (std::size_t i = 0; i < kOutputCount; ++i) {
-        const auto whole = static_cast<std::int64_t>(std::floor(degrees.at(i)));
-        const std::int64_t delta = have_degrees_ ? whole - last_whole_degrees_.at(i) : 0;
-        last_whole_degrees_.at(i) = whole;
+        const auto whole = static_cast<std::int64_t>(std::floor(counts.at(i)));
+        const std::int64_t delta = have_counts_ ? whole - last_whole_counts_.at(i) : 0;
+        last_whole_counts_.at(i) = whole;
         Port& p = ports_.at(i);
         p.tacho_count = advanced(p.tacho_count, delta);
         p.block_tacho_count = advanced(p.block_tacho_count, delta);
@@ -71,7 +71,7 @@ void OutputPorts::update(const std::array<double, kOutputCount>& degrees) {
         }
         apply_tacho_limit(p);
     }
-    have_degrees_ = true;
+    have_counts_ = true;
 }
 
 void OutputPorts::apply_tacho_limit(Port& p) const {

@@ -33,9 +33,9 @@ class OutputPorts {
     /// A program starts or stops: every motor coasts, every counter and target is 0.
     void reset_all();
 
-    /// The tachometers now read `degrees` (cumulative): the counters move by the whole
-    /// degrees turned since the last update; then tacho limits are applied.
-    void update(const std::array<double, kOutputCount>& degrees);
+    /// The tachometers now read `counts` (cumulative, BrickHardware::tacho_counts): the
+    /// counters move by the whole counts since the last update; then tacho limits are applied.
+    void update(const std::array<double, kOutputCount>& counts);
 
     comms::nxt::OutputStateReply reply(std::uint8_t port) const;
     /// What each motor's driver does now, °/s.
@@ -60,8 +60,8 @@ class OutputPorts {
 
     MotorModel model_;
     std::array<Port, kOutputCount> ports_{};
-    std::array<std::int64_t, kOutputCount> last_whole_degrees_{};
-    bool have_degrees_ = false;
+    std::array<std::int64_t, kOutputCount> last_whole_counts_{};
+    bool have_counts_ = false;
 };
 
 }  // namespace legofeup::nxtemu

@@ -50,6 +50,7 @@ struct SimulatedHardware::State {
         : wiring(w),
           on_frame(std::move(callback)),
           wheel_radius(0.5 * run.robot.wheel_diameter),
+          counts_per_degree(run.robot.counts_per_turn / 360.0),
           server(run.world, run.robot, run.config.simulator, run.config.seed, server_options()) {
         check_wiring(wiring);
         server.start();
@@ -98,10 +99,10 @@ struct SimulatedHardware::State {
         const std::lock_guard lock(mutex);
         const double dt = frames == 0 ? 0.0 : std::max(frame.time - frame_time, 0.0);
         for (std::size_t port = 0; port < kOutputCount; ++port) {
-            degrees.at(port) += speeds.at(port) * dt;  // free motors; wheels are set below
+            counts.at(port) += speeds.at(port) * dt * counts_per_degree;  // free motors
         }
-        degrees.at(wiring.right_motor) = sign() * frame.encoder_counts[0];
-        degrees.at(wiring.left_motor) = sign() * frame.encoder_counts[1];
+        counts.at(wiring.right_motor) = sign() * frame.encoder_counts[0];  // the wheels
+        counts.at(wiring.left_motor) = sign() * frame.encoder_counts[1];
         readings.fill(kOpenInputAdc);
         readings.at(wiring.front_ir) = frame.ir_adc[0];
         readings.at(wiring.rear_ir) = frame.ir_adc[1];
@@ -118,13 +119,14 @@ struct SimulatedHardware::State {
 
     const BrickWiring wiring;
     const std::function<void()> on_frame;
-    const double wheel_radius;  ///< nominal, m: as the simulator's motors convert
+    const double wheel_radius;       ///< nominal, m: as the simulator's motors convert
+    const double counts_per_degree;  ///< the robot's counts_per_turn / 360
     simserver::SimServer server;
     std::unique_ptr<lessons::UdpRobotConnection> connection;
 
     mutable std::mutex mutex;  // guards what follows
     std::array<double, kOutputCount> speeds{};
-    std::array<double, kOutputCount> degrees{};
+    std::array<double, kOutputCount> counts{};  ///< the tachometers, BrickHardware's units
     std::array<std::uint16_t, kInputCount> readings{kOpenInputAdc, kOpenInputAdc, kOpenInputAdc,
                                                     kOpenInputAdc};
     double frame_time = 0.0;
@@ -146,9 +148,9 @@ void SimulatedHardware::set_motor_speeds(
     state_->speeds = degrees_per_second;
 }
 
-std::array<double, kOutputCount> SimulatedHardware::motor_degrees() {
+std::array<double, kOutputCount> SimulatedHardware::tacho_counts() {
     const std::lock_guard lock(state_->mutex);
-    return state_->degrees;
+    return state_->counts;
 }
 
 std::array<std::uint16_t, kInputCount> SimulatedHardware::adc() {

@@ -14,6 +14,14 @@ constexpr int kContactIterations = 4;  // sequential-impulse passes over the two
 constexpr int kRight = 0;
 constexpr int kLeft = 1;
 
+/// ⌊turns · counts_per_turn⌋ of a wheel turned `degrees`, wrapped to 32 bits as the NXT's
+/// SLONG counters do. Computed as ⌊degrees · (counts_per_turn / 360)⌋: the factor is exactly
+/// 1, 2 or ½ for 360, 720 or 180 counts, so the NXT's 360 counts are ⌊degrees⌋ bit for bit.
+std::int32_t encoder_count(double degrees, double counts_per_turn) {
+    const auto count = static_cast<std::int64_t>(std::floor(degrees * (counts_per_turn / 360.0)));
+    return static_cast<std::int32_t>(static_cast<std::uint32_t>(count));
+}
+
 double cross(const Vector2& a, const Vector2& b) {
     return a.x() * b.y() - a.y() * b.x();
 }
@@ -44,6 +52,11 @@ void DriveTrain::set_command(const WheelSpeeds& command) {
 void DriveTrain::stop_motors() {
     target_rate_ = {0.0, 0.0};
     rate_ = {0.0, 0.0};
+}
+
+std::array<std::int32_t, 2> DriveTrain::encoder_counts() const {
+    return {encoder_count(wheel_degrees_[kRight], spec_.counts_per_turn),
+            encoder_count(wheel_degrees_[kLeft], spec_.counts_per_turn)};
 }
 
 WheelSpeeds DriveTrain::surface_speeds() const {

@@ -7,6 +7,7 @@
 #include <box2d/box2d.h>
 
 #include <array>
+#include <cstdint>
 
 #include "legofeup/core/motion.hpp"
 #include "legofeup/sim/robot_spec.hpp"
@@ -26,8 +27,9 @@ class DriveTrain {
     /// tyre impulses that make the chassis follow the wheels (within friction).
     void drive(b2Body& chassis, double dt, GaussianStream& slip_right, GaussianStream& slip_left);
 
-    /// Cumulative wheel rotation, degrees: [0] right, [1] left.
-    const std::array<double, 2>& wheel_degrees() const { return wheel_degrees_; }
+    /// What the encoders report: ⌊turns · counts_per_turn⌋ of each wheel, [0] right, [1]
+    /// left, as 32-bit counters that wrap (docs/protocol.md).
+    std::array<std::int32_t, 2> encoder_counts() const;
     /// Surface speeds ω·r of the wheels, m/s.
     WheelSpeeds surface_speeds() const;
 
@@ -38,7 +40,7 @@ class DriveTrain {
     std::array<double, 2> radius_{};         // actual wheel radii, m
     std::array<double, 2> target_rate_{};    // rad/s
     std::array<double, 2> rate_{};           // rad/s
-    std::array<double, 2> wheel_degrees_{};  // encoder angle
+    std::array<double, 2> wheel_degrees_{};  // cumulative wheel rotation, degrees
 };
 
 }  // namespace legofeup::sim

@@ -330,9 +330,7 @@ SensorFrame Simulator::sensor_frame() const {
     SensorFrame frame;
     frame.time = state_->time();
     frame.sequence = state_->sequence;
-    const auto& degrees = state_->drive_train.wheel_degrees();
-    frame.encoder_counts = {static_cast<std::int32_t>(std::floor(degrees[0])),
-                            static_cast<std::int32_t>(std::floor(degrees[1]))};
+    frame.encoder_counts = state_->drive_train.encoder_counts();
     frame.ir_adc = state_->ir_adc;
     state_->extra.fill(frame, state_->robot, state_->settings.control_period);
     return frame;

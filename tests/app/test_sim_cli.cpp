@@ -64,6 +64,23 @@ TEST_F(SimCli, AnExperimentOverUdpInLockstepWritesWhatTheInProcessRunWrites) {
     EXPECT_NE(summary.find("\"frames_missing\": 0"), std::string::npos);
 }
 
+// The server's encoders count at --counts-per-turn, as the lockstep simulator's count at the
+// configuration's robot.counts_per_turn: with 720 on both sides the run over UDP is the
+// in-process run, byte for byte (a server counting degrees would halve every distance).
+TEST_F(SimCli, AServerCountingAtTheClientsResolutionGivesTheInProcessRun) {
+    const std::string link = start_server("--time-scale 0 --counts-per-turn 720");
+    ASSERT_FALSE(link.empty());
+    const fs::path config = dir_ / "cpt720.toml";
+    std::ofstream(config) << "[robot]\ncounts_per_turn = 720\n";
+    const std::string experiment =
+        "run -e f --laps 1 --no-plots --quiet -c " + config.string() + " ";
+    const Result udp = run(LEGOFEUP_CLI, experiment + link + " -o " + (dir_ / "udp").string());
+    ASSERT_EQ(udp.exit_code, 0) << udp.err;
+    const Result local = run(LEGOFEUP_CLI, experiment + "-o " + (dir_ / "local").string());
+    ASSERT_EQ(local.exit_code, 0) << local.err;
+    EXPECT_EQ(read_file(dir_ / "udp" / "trace.csv"), read_file(dir_ / "local" / "trace.csv"));
+}
+
 TEST_F(SimCli, ALinkThatIsNotAUrlOrHasNoServerIsAClearError) {
     const Result bad = run(LEGOFEUP_CLI, "run -e f -o " + (dir_ / "x").string()
                                              + " --link udp://simulator.local:5600");
@@ -94,6 +111,10 @@ TEST_F(SimCli, ServerRefusesBadOptionsWithAPreciseMessage) {
     EXPECT_EQ(noise.exit_code, 1);
     EXPECT_NE(noise.err.find("slip_noise = -1"), std::string::npos) << noise.err;
 
+    const Result counts = run(LEGOFEUP_SIM, "--port 0 --counts-per-turn 0 --duration 1");
+    EXPECT_EQ(counts.exit_code, 1);
+    EXPECT_NE(counts.err.find("simulator.counts_per_turn = 0"), std::string::npos) << counts.err;
+
     const Result absent = run(LEGOFEUP_SIM, "--port 0 --duration 1 --world offce");
     EXPECT_NE(absent.exit_code, 0);  // CLI11's validation exit code
     EXPECT_NE(absent.err.find("--world: 'offce': neither a built-in world"), std::string::npos)
@@ -118,6 +139,7 @@ TEST_F(SimCli, ServerPrintsWhereItListensAndStopsAfterItsDuration) {
     EXPECT_EQ(result.exit_code, 0) << result.err;
     EXPECT_NE(result.out.find("robot   udp://127.0.0.1:"), std::string::npos) << result.out;
     EXPECT_NE(result.out.find("LegoFeup standard arena"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("encoders 360 counts a turn"), std::string::npos) << result.out;
 }
 
 TEST_F(SimCli, ServerRunsABuiltInWorldByItsName) {

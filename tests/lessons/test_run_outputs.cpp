@@ -8,9 +8,12 @@
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
+#include "trace_hash_test_support.hpp"
 
 namespace legofeup::lessons {
 namespace {
+
+using hash_testing::fnv1a_64;
 
 std::string trace_of(const char* experiment, std::uint64_t seed, RunResult* result = nullptr) {
     RunConfig config = find_experiment(experiment)->config;
@@ -26,20 +29,12 @@ std::string trace_of(const char* experiment, std::uint64_t seed, RunResult* resu
     return csv.str();
 }
 
-std::uint64_t fnv1a(const std::string& text) {
-    std::uint64_t hash = 0xcbf29ce484222325ULL;
-    for (const char c : text) {
-        hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
-    }
-    return hash;
-}
-
 TEST(RunOutputs, SameSeedGivesABitIdenticalTrace) {
     const std::string first = trace_of("f", 7);
     const std::string second = trace_of("f", 7);
-    EXPECT_EQ(fnv1a(first), fnv1a(second));
+    EXPECT_EQ(fnv1a_64(first), fnv1a_64(second));
     EXPECT_EQ(first, second);
-    EXPECT_NE(fnv1a(first), fnv1a(trace_of("f", 8)));  // different noise
+    EXPECT_NE(fnv1a_64(first), fnv1a_64(trace_of("f", 8)));  // different noise
 }
 
 TEST(RunOutputs, TraceHasTheDocumentedColumnsAndOneRowPerStep) {

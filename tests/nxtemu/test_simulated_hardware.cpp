@@ -1,6 +1,6 @@
 // The emulated brick on the simulated robot: regulated power moves the robot as the firmware's
-// speed regulation would, the IR ports read the simulator's A/D values, and the whole brick
-// answers over TCP.
+// speed regulation would, the tachometers count at the robot's encoder resolution, the IR
+// ports read the simulator's A/D values, and the whole brick answers over TCP.
 
 #include <gtest/gtest.h>
 
@@ -30,8 +30,8 @@ using namespace std::chrono_literals;
 /// The firmware on the simulated robot, advanced on every simulator frame.
 class SimulatedBrick {
   public:
-    SimulatedBrick()
-        : run_(nxtemu::resolve_emulated_run(lessons::RunConfig{})),
+    explicit SimulatedBrick(const lessons::RunConfig& config = {})
+        : run_(nxtemu::resolve_emulated_run(config)),
           hardware_(run_, nxtemu::BrickWiring{},
                     [this] {
                         const std::lock_guard lock(mutex_);
@@ -103,6 +103,30 @@ TEST(SimulatedHardware, RegulatedPower26DrivesTheRobotAt10DegreesPerSecondPerUni
     EXPECT_NEAR(counts.rotation_count, 520, 40);
     EXPECT_GT(brick.hardware().frames(), 150U);  // a frame every 10 ms
 }
+
+// A robot whose encoders count 180 or 720 a turn: power 26 for 2 s turns every motor the same
+// 520° as on the NXT's 360-count tachometer (the test above), and each of the three counters
+// reads 520° · counts_per_turn / 360 — the wheels' (B, C) from the simulator's encoders, the
+// free motor's (A) from its speed. Degrees would read 520 for either.
+class EncoderResolution : public ::testing::TestWithParam<double> {};
+
+TEST_P(EncoderResolution, RotationCountsCountTheRobotsCountsPerTurn) {
+    lessons::RunConfig config;
+    config.robot.counts_per_turn = GetParam();
+    SimulatedBrick brick(config);
+    std::this_thread::sleep_for(100ms);
+    brick.send(regulated_both(26));
+    std::this_thread::sleep_for(2s);
+    brick.send(regulated_both(0));
+    const double scale = GetParam() / 360.0;
+    for (const std::uint8_t port : {std::uint8_t{0}, std::uint8_t{1}, std::uint8_t{2}}) {
+        const auto counts =
+            nxt::decode_output_state_reply(*brick.send(nxt::encode_get_output_state(port)));
+        EXPECT_NEAR(counts.rotation_count, 520.0 * scale, 40.0 * scale) << "port " << int{port};
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(CountsPerTurn, EncoderResolution, ::testing::Values(180.0, 720.0));
 
 TEST(SimulatedHardware, IrPortsReadTheSimulatorsAdcValues) {
     SimulatedBrick brick;

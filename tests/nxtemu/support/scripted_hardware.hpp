@@ -18,7 +18,8 @@ class ScriptedHardware final : public nxtemu::BrickHardware {
     void set_motor_speeds(const std::array<double, nxtemu::kOutputCount>& wanted) override {
         speeds = wanted;
     }
-    std::array<double, nxtemu::kOutputCount> motor_degrees() override { return degrees; }
+    /// The NXT's tachometers: 1 count = 1°.
+    std::array<double, nxtemu::kOutputCount> tacho_counts() override { return degrees; }
     std::array<std::uint16_t, nxtemu::kInputCount> adc() override { return readings; }
 
     std::array<double, nxtemu::kOutputCount> speeds{};

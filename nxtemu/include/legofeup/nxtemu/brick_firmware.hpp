@@ -10,7 +10,8 @@
 //  - a command sent "no reply" (0x80) gets nothing back, not even an error;
 //  - SETINPUTMODE makes the port's reading invalid for 20 ms when the type changes (1 ms
 //    when it does not); NO_SENSOR stops updating the raw value (it goes stale);
-//  - TachoCount, BlockTachoCount and RotationCount count the motor's degrees;
+//  - TachoCount, BlockTachoCount and RotationCount count the motor's tachometer (degrees on
+//    a real NXT; the robot's counts_per_turn a turn on the simulated one);
 //    RESETMOTORPOSITION zeroes RotationCount (relative = 0) or BlockTachoCount (relative =
 //    1); TachoCount is reset only when a program starts or stops (as in the firmware:
 //    SETOUTPUTSTATE does not reset it, it moves the tacho-limit target);

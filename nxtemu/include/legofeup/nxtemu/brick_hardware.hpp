@@ -35,9 +35,10 @@ class BrickHardware {
     /// (positive: the direction positive power turns it). The firmware calls this whenever
     /// an output changes; 0 stops the motor.
     virtual void set_motor_speeds(const std::array<double, kOutputCount>& degrees_per_second) = 0;
-    /// Cumulative rotation of each motor since the hardware started, degrees: the
-    /// tachometer (1 count = 1°).
-    virtual std::array<double, kOutputCount> motor_degrees() = 0;
+    /// Each motor's tachometer since the hardware started, in its counts (cumulative, not
+    /// yet rounded): the NXT's counts 360 a turn, 1 count = 1°; an emulated robot's counts
+    /// its configured robot.counts_per_turn. The firmware's counters move by its whole counts.
+    virtual std::array<double, kOutputCount> tacho_counts() = 0;
     /// The A/D value (0–1023) of pin 1 of each input port now; kOpenInputAdc for a port
     /// with nothing attached.
     virtual std::array<std::uint16_t, kInputCount> adc() = 0;

@@ -8,7 +8,10 @@
 //
 // Units: a motor turning at ω °/s drives its wheel at ω·π/180·r m/s with the nominal wheel
 // radius r, which is how the simulator turns a wheel-speed command back into rotation — so
-// regulated power P turns the simulated wheel at P·10 °/s (up to the motor's 170 rpm).
+// regulated power P turns the simulated wheel at P·10 °/s (up to the motor's 170 rpm). The
+// tachometers count at the robot's encoder resolution, counts_per_turn a turn (the NXT's 360:
+// 1 count = 1°): the wheels' are the simulator's encoder counts, a free motor's ω·t ·
+// counts_per_turn/360.
 
 #include <array>
 #include <cstdint>
@@ -45,9 +48,9 @@ class SimulatedHardware final : public BrickHardware {
     SimulatedHardware& operator=(const SimulatedHardware&) = delete;
 
     void set_motor_speeds(const std::array<double, kOutputCount>& degrees_per_second) override;
-    /// The wheel motors' rotation from the simulator's encoders; a motor with no wheel turns
-    /// freely at its speed.
-    std::array<double, kOutputCount> motor_degrees() override;
+    /// The wheel motors' counts from the simulator's encoders; a motor with no wheel turns
+    /// freely at its speed and counts at the same resolution.
+    std::array<double, kOutputCount> tacho_counts() override;
     /// The IR sensors' A/D values on their ports; kOpenInputAdc elsewhere.
     std::array<std::uint16_t, kInputCount> adc() override;
 

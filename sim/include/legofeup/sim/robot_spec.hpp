@@ -19,7 +19,7 @@ struct RobotSpec {
     double wheel_diameter_ratio = 1.0;  ///< E_d = D_right / D_left, same average diameter
     double wheel_base = 0.12;           ///< nominal distance between the wheels' contacts, m
     double wheel_base_ratio = 1.0;      ///< E_b = actual / nominal wheel base
-    double counts_per_turn = 360.0;     ///< encoder ticks per wheel revolution (1° each)
+    double counts_per_turn = 360.0;     ///< encoder counts a wheel turn (NXT: 360, 1 count = 1°)
 
     // Body and floor.
     double mass = 0.6;                 ///< kg
