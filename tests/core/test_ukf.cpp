@@ -1,13 +1,16 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <random>
 
+#include "binomial_interval.hpp"
 #include "kinematic_world.hpp"
 #include "legofeup/core/beacon_bearing.hpp"
+#include "legofeup/core/chi_square.hpp"
 #include "legofeup/core/extended_kalman_filter.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
 #include "legofeup/core/pose_state_space.hpp"
@@ -158,6 +161,57 @@ TEST(Ukf, EqualsTheEkfOnALinearMeasurement) {
         expect_ukf_update_equals_ekf(
             update_both(StateVector(0.3, -0.2, 0.4), test_covariance(), kappa, m), m, kappa);
     }
+}
+
+// A gate at probability p rejects a consistent measurement with probability 1 − p: draw the
+// truth from N(X̂, P) and z = H·X + v, v ~ N(0, R), so ν = z − H·X̂ ~ N(0, S) and the NIS is
+// exactly χ²(2). Over N trials the rejections are Binomial(N, 1 − p) and the average NIS
+// χ²(2N)/N; both must lie in their exact two-sided 99.9 % intervals, for the UKF and the EKF
+// alike, trial for trial. A gate on the wrong χ² (e.g. 1 dof: 26 % rejected instead of 10 %)
+// or an S missing a term falls outside.
+TEST(Ukf, GateRejectsConsistentMeasurementsAtItsProbabilityLikeTheEkf) {
+    const StateVector x0(0.3, -0.2, 0.4);
+    const StateCovariance P0 = test_covariance();
+    LinearMeasurement m = test_measurement(Eigen::Vector2d::Zero());  // z drawn per trial
+    constexpr double kGateProbability = 0.9;
+    MahalanobisGate gate;
+    gate.enabled = true;
+    gate.threshold = chi_square_quantile(kGateProbability, LinearMeasurement::kSize);
+
+    const StateCovariance root_p = Eigen::LLT<StateCovariance>(P0).matrixL();
+    const Eigen::Matrix2d root_r = Eigen::LLT<Eigen::Matrix2d>(m.R).matrixL();
+    std::mt19937_64 rng(11);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    constexpr int kTrials = 3000;
+    int rejected = 0;
+    double nis_sum = 0.0;
+    for (int trial = 0; trial < kTrials; ++trial) {
+        const StateVector truth = x0 + root_p * StateVector(normal(rng), normal(rng), normal(rng));
+        m.z = m.H * truth + root_r * Eigen::Vector2d(normal(rng), normal(rng));
+        Ekf ekf;
+        ASSERT_TRUE(ekf.reset(x0, P0));
+        const auto e = ekf.update(m, gate);
+        ASSERT_TRUE(e.status == StepStatus::Applied || e.status == StepStatus::RejectedByGate)
+            << "trial " << trial << ": " << to_string(e.status);
+        rejected += e.status == StepStatus::RejectedByGate ? 1 : 0;
+        nis_sum += e.nis;
+        for (const double kappa : {0.0, 1.0}) {
+            Ukf ukf(UkfParams{kappa});
+            ASSERT_TRUE(ukf.reset(x0, P0));
+            const auto u = ukf.update(m, gate);
+            ASSERT_EQ(u.status, e.status) << "trial " << trial << " kappa " << kappa;
+            ASSERT_NEAR(u.nis, e.nis, 1e-9 * e.nis) << "trial " << trial << " kappa " << kappa;
+        }
+    }
+    const testing::CountInterval expected =
+        testing::binomial_interval(kTrials, 1.0 - kGateProbability, 0.999);
+    EXPECT_TRUE(expected.contains(rejected))
+        << rejected << " rejected, expected " << expected.lower << "–" << expected.upper;
+    const ChiSquareInterval nis_bounds =
+        average_chi_square_interval(LinearMeasurement::kSize, kTrials, 0.999);
+    EXPECT_TRUE(nis_bounds.contains(nis_sum / kTrials))
+        << "average NIS " << nis_sum / kTrials << " outside [" << nis_bounds.lower << ", "
+        << nis_bounds.upper << "]";
 }
 
 /// Polar → Cartesian, reading the pose's x as a range ρ and θ as a direction:
