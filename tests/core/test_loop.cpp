@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <set>
@@ -119,19 +120,30 @@ TEST(LegoFeupLoop, WallUpdatesCorrectTheSystematicOdometryErrors) {
     EXPECT_LT(position_error(last.truth, last.snapshot.estimate), odometry_error / 4.0);
 }
 
-TEST(LegoFeupLoop, DirectModeSnapsToTheWalls) {
-    // Experiment b: R ≈ 0. At the first contact with a wall the estimate jumps onto the
-    // measured y and θ, however far odometry had drifted; afterwards it stays on the readings
-    // to well within their quantisation (one A/D count at 15 cm is ≈0.9 mm, ≈9 mrad of
-    // ObsAng). It cannot stay exactly on them: the prior is then as confident as the readings
-    // along the direction that ties y to θ, so later updates are compromises.
-    LoopConfig config;
+/// How far apart two headings are on the circle: |wrap(a − b)|, so that π − 0.001 and
+/// −π + 0.001 are 0.002 apart, not 2π − 0.002.
+double heading_gap(double a, double b) {
+    return std::abs(wrap_angle(a - b));
+}
+
+struct SnapCounts {
+    int checked = 0;          ///< applied updates checked
+    int across_the_seam = 0;  ///< of which the estimate and z₂ lie on opposite sides of ±π
+};
+
+// Experiment b: R ≈ 0. At the first contact with a wall the estimate jumps onto the measured
+// y and θ, however far odometry had drifted; afterwards it stays on the readings to well
+// within their quantisation (one A/D count at 15 cm is ≈0.9 mm, ≈9 mrad of ObsAng). It cannot
+// stay exactly on them: the prior is then as confident as the readings along the direction
+// that ties y to θ, so later updates are compromises. Runs `config` for `seconds` with the
+// belief starting 3 cm off the truth in y, and checks every applied update.
+SnapCounts expect_direct_mode_snaps(LoopConfig config, double seconds) {
     config.filter.r11 = 1e-12;
     config.filter.r22 = 1e-12;
     const Pose2 truth_start = config.initial.pose;
     config.initial.pose.y += 0.03;  // the belief starts 3 cm off: the first update removes it
-    const auto records = run(config, systematic_errors(), 40.0, 0.0, truth_start);
-    int checked = 0;
+    const auto records = run(config, systematic_errors(), seconds, 0.0, truth_start);
+    SnapCounts counts;
     for (const RunRecord& r : records) {
         const WallUpdateReport& update = r.snapshot.update;
         if (update.status != StepStatus::Applied) {
@@ -141,16 +153,38 @@ TEST(LegoFeupLoop, DirectModeSnapsToTheWalls) {
         const Vector2 normal = config.walls.line(r.snapshot.association.wall).normal;
         const Vector2 position(r.snapshot.estimate(kX), r.snapshot.estimate(kY));
         const double position_gap = std::abs(normal.dot(position) - update.measurement(0));
-        const double theta_gap = std::abs(r.snapshot.estimate(kTheta) - update.measurement(1));
-        if (checked == 0) {
+        const double theta = r.snapshot.estimate(kTheta);
+        if (counts.checked == 0) {
             EXPECT_GT(std::abs(update.innovation(0)), 0.02);
             EXPECT_LT(position_gap, 1e-3 * std::abs(update.innovation(0)));
         }
         EXPECT_LT(position_gap, 4e-4) << "t = " << r.snapshot.time;
-        EXPECT_LT(theta_gap, 2e-3) << "t = " << r.snapshot.time;
-        ++checked;
+        EXPECT_LT(heading_gap(theta, update.measurement(1)), 2e-3)
+            << "t = " << r.snapshot.time << ": θ̂ = " << theta << ", z₂ = " << update.measurement(1);
+        ++counts.checked;
+        counts.across_the_seam += std::abs(theta - update.measurement(1)) > kPi ? 1 : 0;
     }
-    EXPECT_GT(checked, 50);
+    return counts;
+}
+
+TEST(LegoFeupLoop, DirectModeSnapsToTheWalls) {
+    // The first side (wall_y−, heading 0) and the start of the second (wall_x+, heading π/2).
+    const SnapCounts counts = expect_direct_mode_snaps(LoopConfig{}, 40.0);
+    EXPECT_GT(counts.checked, 50);
+}
+
+TEST(LegoFeupLoop, DirectModeSnapsToTheWallSeenAtHeadingPi) {
+    // The third side: y = +1 driven at heading π, the sensors on wall_y+, z₂ = π + ObsAng.
+    // Estimate and reading then sit on either side of the ±π seam at some updates; their gap
+    // must be taken on the circle (an unwrapped gap reads ≈ 2π there).
+    LoopConfig config;
+    config.initial.pose = Pose2{1.0, 1.0, kPi};
+    std::vector<PathSegment> path = square_path(ArenaSpec{});
+    std::rotate(path.begin(), path.begin() + 2, path.end());  // start at (1, 1) heading −x
+    config.controller = FollowPath(std::move(path), 0);
+    const SnapCounts counts = expect_direct_mode_snaps(config, 12.0);
+    EXPECT_GT(counts.checked, 50);
+    EXPECT_GT(counts.across_the_seam, 0) << "the run never tested the seam";
 }
 
 TEST(LegoFeupLoop, SnapshotReportsTheModulesOutputs) {

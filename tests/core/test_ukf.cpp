@@ -1,16 +1,21 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <random>
 
+#include "binomial_interval.hpp"
+#include "kinematic_world.hpp"
 #include "legofeup/core/beacon_bearing.hpp"
+#include "legofeup/core/chi_square.hpp"
 #include "legofeup/core/extended_kalman_filter.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
 #include "legofeup/core/pose_state_space.hpp"
 #include "legofeup/core/unscented_kalman_filter.hpp"
+#include "legofeup/core/wall_measurement.hpp"
 
 namespace legofeup {
 namespace {
@@ -81,6 +86,58 @@ double min_eigenvalue(const StateCovariance& P) {
     return Eigen::SelfAdjointEigenSolver<StateCovariance>(P).eigenvalues().minCoeff();
 }
 
+/// The linear measurement of the comparisons below: z = [x + 0.2·y, θ], correlated noise.
+LinearMeasurement test_measurement(const Eigen::Vector2d& z) {
+    LinearMeasurement m;
+    m.H << 1.0, 0.2, 0.0,  //
+        0.0, 0.0, 1.0;
+    m.z = z;
+    m.R << 1e-2, 2e-3,  //
+        2e-3, 5e-3;
+    return m;
+}
+
+/// The EKF and a UKF with κ, started from the same belief and updated with one measurement.
+template <class Measurement>
+struct UpdatedPair {
+    Ekf ekf;
+    Ukf ukf;
+    UpdateReport<Measurement::kSize, kStateSize> e;
+    UpdateReport<Measurement::kSize, kStateSize> u;
+};
+
+template <class Measurement>
+UpdatedPair<Measurement> update_both(const StateVector& x0, const StateCovariance& P0, double kappa,
+                                     const Measurement& m) {
+    UpdatedPair<Measurement> pair{Ekf{}, Ukf(UkfParams{kappa}), {}, {}};
+    EXPECT_TRUE(pair.ekf.reset(x0, P0));
+    EXPECT_TRUE(pair.ukf.reset(x0, P0));
+    pair.e = pair.ekf.update(m);
+    pair.u = pair.ukf.update(m);
+    return pair;
+}
+
+/// For a measurement linear in the state the unscented transform is exact, so the UKF's
+/// update must be the EKF's; angles are compared on the circle (the model's residual, the
+/// state space's difference).
+template <class Measurement>
+void expect_ukf_update_equals_ekf(const UpdatedPair<Measurement>& p, const Measurement& m,
+                                  double kappa) {
+    ASSERT_EQ(p.e.status, StepStatus::Applied);
+    ASSERT_EQ(p.u.status, StepStatus::Applied)
+        << "kappa " << kappa << ": " << to_string(p.u.status);
+    EXPECT_LT(m.residual(p.u.predicted, p.e.predicted).cwiseAbs().maxCoeff(), 1e-12) << kappa;
+    EXPECT_LT((p.u.innovation - p.e.innovation).cwiseAbs().maxCoeff(), 1e-12) << kappa;
+    EXPECT_LT((p.u.innovation_covariance - p.e.innovation_covariance).cwiseAbs().maxCoeff(), 1e-12)
+        << "kappa " << kappa;
+    EXPECT_LT((p.u.gain - p.e.gain).cwiseAbs().maxCoeff(), 1e-9) << "kappa " << kappa;
+    EXPECT_NEAR(p.u.nis, p.e.nis, 1e-9) << "kappa " << kappa;
+    EXPECT_LT(PoseStateSpace::difference(p.ukf.state(), p.ekf.state()).cwiseAbs().maxCoeff(), 1e-9)
+        << "kappa " << kappa;
+    EXPECT_LT((p.ukf.covariance() - p.ekf.covariance()).cwiseAbs().maxCoeff(), 1e-9)
+        << "kappa " << kappa;
+}
+
 // (a) On a linear model the unscented transform is exact, so the UKF equals the EKF.
 TEST(Ukf, EqualsTheEkfOnALinearProcessModel) {
     for (const double kappa : {0.0, 1.0, -2.0, 3.0}) {
@@ -99,30 +156,62 @@ TEST(Ukf, EqualsTheEkfOnALinearProcessModel) {
 }
 
 TEST(Ukf, EqualsTheEkfOnALinearMeasurement) {
+    const LinearMeasurement m = test_measurement(Eigen::Vector2d(0.45, 0.3));
     for (const double kappa : {0.0, 1.0, -1.0}) {
-        const StateVector x0(0.3, -0.2, 0.4);
-        LinearMeasurement m;
-        m.H << 1.0, 0.2, 0.0,  //
-            0.0, 0.0, 1.0;
-        m.z = Eigen::Vector2d(0.45, 0.3);
-        m.R << 1e-2, 2e-3,  //
-            2e-3, 5e-3;
-        Ekf ekf;
-        Ukf ukf(UkfParams{kappa});
-        ASSERT_TRUE(ekf.reset(x0, test_covariance()));
-        ASSERT_TRUE(ukf.reset(x0, test_covariance()));
-        const auto e = ekf.update(m);
-        const auto u = ukf.update(m);
-        ASSERT_EQ(e.status, StepStatus::Applied);
-        ASSERT_EQ(u.status, StepStatus::Applied) << "kappa " << kappa;
-        EXPECT_LT((u.predicted - e.predicted).cwiseAbs().maxCoeff(), 1e-12);
-        EXPECT_LT((u.innovation_covariance - e.innovation_covariance).cwiseAbs().maxCoeff(), 1e-12);
-        EXPECT_LT((u.gain - e.gain).cwiseAbs().maxCoeff(), 1e-9);
-        EXPECT_NEAR(u.nis, e.nis, 1e-9);
-        EXPECT_LT((ukf.state() - ekf.state()).cwiseAbs().maxCoeff(), 1e-9) << "kappa " << kappa;
-        EXPECT_LT((ukf.covariance() - ekf.covariance()).cwiseAbs().maxCoeff(), 1e-9)
-            << "kappa " << kappa;
+        expect_ukf_update_equals_ekf(
+            update_both(StateVector(0.3, -0.2, 0.4), test_covariance(), kappa, m), m, kappa);
     }
+}
+
+// A gate at probability p rejects a consistent measurement with probability 1 − p: draw the
+// truth from N(X̂, P) and z = H·X + v, v ~ N(0, R), so ν = z − H·X̂ ~ N(0, S) and the NIS is
+// exactly χ²(2). Over N trials the rejections are Binomial(N, 1 − p) and the average NIS
+// χ²(2N)/N; both must lie in their exact two-sided 99.9 % intervals, for the UKF and the EKF
+// alike, trial for trial. A gate on the wrong χ² (e.g. 1 dof: 26 % rejected instead of 10 %)
+// or an S missing a term falls outside.
+TEST(Ukf, GateRejectsConsistentMeasurementsAtItsProbabilityLikeTheEkf) {
+    const StateVector x0(0.3, -0.2, 0.4);
+    const StateCovariance P0 = test_covariance();
+    LinearMeasurement m = test_measurement(Eigen::Vector2d::Zero());  // z drawn per trial
+    constexpr double kGateProbability = 0.9;
+    MahalanobisGate gate;
+    gate.enabled = true;
+    gate.threshold = chi_square_quantile(kGateProbability, LinearMeasurement::kSize);
+
+    const StateCovariance root_p = Eigen::LLT<StateCovariance>(P0).matrixL();
+    const Eigen::Matrix2d root_r = Eigen::LLT<Eigen::Matrix2d>(m.R).matrixL();
+    std::mt19937_64 rng(11);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    constexpr int kTrials = 3000;
+    int rejected = 0;
+    double nis_sum = 0.0;
+    for (int trial = 0; trial < kTrials; ++trial) {
+        const StateVector truth = x0 + root_p * StateVector(normal(rng), normal(rng), normal(rng));
+        m.z = m.H * truth + root_r * Eigen::Vector2d(normal(rng), normal(rng));
+        Ekf ekf;
+        ASSERT_TRUE(ekf.reset(x0, P0));
+        const auto e = ekf.update(m, gate);
+        ASSERT_TRUE(e.status == StepStatus::Applied || e.status == StepStatus::RejectedByGate)
+            << "trial " << trial << ": " << to_string(e.status);
+        rejected += e.status == StepStatus::RejectedByGate ? 1 : 0;
+        nis_sum += e.nis;
+        for (const double kappa : {0.0, 1.0}) {
+            Ukf ukf(UkfParams{kappa});
+            ASSERT_TRUE(ukf.reset(x0, P0));
+            const auto u = ukf.update(m, gate);
+            ASSERT_EQ(u.status, e.status) << "trial " << trial << " kappa " << kappa;
+            ASSERT_NEAR(u.nis, e.nis, 1e-9 * e.nis) << "trial " << trial << " kappa " << kappa;
+        }
+    }
+    const testing::CountInterval expected =
+        testing::binomial_interval(kTrials, 1.0 - kGateProbability, 0.999);
+    EXPECT_TRUE(expected.contains(rejected))
+        << rejected << " rejected, expected " << expected.lower << "–" << expected.upper;
+    const ChiSquareInterval nis_bounds =
+        average_chi_square_interval(LinearMeasurement::kSize, kTrials, 0.999);
+    EXPECT_TRUE(nis_bounds.contains(nis_sum / kTrials))
+        << "average NIS " << nis_sum / kTrials << " outside [" << nis_bounds.lower << ", "
+        << nis_bounds.upper << "]";
 }
 
 /// Polar → Cartesian, reading the pose's x as a range ρ and θ as a direction:
@@ -178,12 +267,7 @@ TEST(Ukf, UnscentedTransformBeatsLinearisationAgainstMonteCarlo) {
     EXPECT_NEAR(mc_mean(0), std::exp(-0.125), 0.003);  // the analytic mean, a sanity check
 
     for (const double kappa : {0.0, 1.0}) {
-        Ekf ekf;
-        Ukf ukf(UkfParams{kappa});
-        ASSERT_TRUE(ekf.reset(mean, P));
-        ASSERT_TRUE(ukf.reset(mean, P));
-        const auto e = ekf.update(m);
-        const auto u = ukf.update(m);
+        const auto [ekf, ukf, e, u] = update_both(mean, P, kappa, m);
         EXPECT_GT((e.predicted - mc_mean).norm(), 0.1);
         EXPECT_LT((u.predicted - mc_mean).norm(), 0.005) << "kappa " << kappa;
         const double ekf_error = (e.innovation_covariance - mc_covariance).cwiseAbs().maxCoeff();
@@ -230,6 +314,45 @@ TEST(Ukf, PredictWithTheHeadingNearPiMatchesTheEkf) {
     EXPECT_LT(std::abs(wrap_angle(ukf.state()(kTheta) - ekf.state()(kTheta))), 1e-3);
     EXPECT_NEAR(ukf.covariance()(kTheta, kTheta), ekf.covariance()(kTheta, kTheta),
                 0.01 * ekf.covariance()(kTheta, kTheta));
+}
+
+// The wall_y+ seen from inside the square at heading ≈ π: z₂ = ang(−n) − π/2 + ObsAng =
+// π + ObsAng lies on the ±π seam. The truth is just past it (θ = −π + 0.01), the belief just
+// before it (θ̂ = π − 0.03), and σ_θ = 0.1 puts sigma points on both sides. The wall model is
+// linear in the state (h(X) = ∇h_X·X, wall_measurement.hpp), so the unscented transform is
+// exact and the UKF must equal the EKF, innovation ν₂ = wrap(z₂ − θ̂) = +0.04 and all; it can
+// only if it averages the sigma points' angles on the circle and wraps every difference (an
+// arithmetic mean of Zᵢ₂ ≈ ±π lands near 0; unwrapped ΔZᵢ or ΔXᵢ of ≈ 2π blow up S or P_xz).
+TEST(Ukf, WallUpdateAcrossTheHeadingSeamEqualsTheEkf) {
+    const WallMap walls = standard_arena_walls(ArenaSpec{});
+    const int wall_y_plus = 2;
+    const Pose2 truth{0.4, 1.0, -kPi + 0.01};
+    const StateVector x0(0.38, 0.97, kPi - 0.03);
+    const StateCovariance P0 = Eigen::Vector3d(1e-3, 1e-3, 1e-2).asDiagonal();
+    const auto ds = testing::true_ir_distances(truth, walls.walls());  // independent ray cast
+    const WallMeasurement m(walls.line(wall_y_plus), -1, observe_wall(ds[0], ds[1], IrMount{}),
+                            Eigen::Matrix2d::Identity() * 1e-4);
+    // The premises: the reading is across the seam from the belief, and so are sigma points.
+    ASSERT_NEAR(m.measurement()(0), truth.y, 1e-9);
+    ASSERT_NEAR(m.measurement()(1), truth.theta, 1e-9);
+    ASSERT_GT(x0(kTheta) + std::sqrt(2.0 * P0(kTheta, kTheta)), kPi);  // n + κ ≥ 2 below
+
+    for (const double kappa : {0.0, 1.0, -1.0}) {
+        const UpdatedPair<WallMeasurement> pair = update_both(x0, P0, kappa, m);
+        expect_ukf_update_equals_ekf(pair, m, kappa);
+        EXPECT_NEAR(pair.u.innovation(1), 0.04, 1e-9) << kappa;  // (−π + 0.01) − (π − 0.03)
+        const Ukf& ukf = pair.ukf;
+
+        // The update moves the belief toward the truth: y up, θ forward toward the seam (an
+        // unwrapped ν₂ ≈ −2π would turn it backwards), and the heading stays wrapped.
+        const StateVector before = PoseStateSpace::difference(to_state(truth), x0);
+        const StateVector after = PoseStateSpace::difference(to_state(truth), ukf.state());
+        EXPECT_LT(std::abs(after(kY)), std::abs(before(kY))) << "kappa " << kappa;
+        EXPECT_LT(std::abs(after(kTheta)), std::abs(before(kTheta))) << "kappa " << kappa;
+        EXPECT_GT(wrap_angle(ukf.state()(kTheta) - x0(kTheta)), 0.0) << "kappa " << kappa;
+        EXPECT_GT(ukf.state()(kTheta), -kPi);
+        EXPECT_LE(ukf.state()(kTheta), kPi);
+    }
 }
 
 // (d) Rejections leave x and P unchanged.
@@ -279,6 +402,17 @@ TEST(Ukf, SemiDefiniteProcessNoiseIsAccepted) {
 }
 
 TEST(Ukf, AbsurdNoiseKeepsTheCovarianceFiniteAndPositiveDefinite) {
+    // Q and R log-uniform in 1e-12 … 1e9, bearings to two beacons. Every step's status is
+    // checked, since a UKF that refused the hard steps would keep a healthy P and pass:
+    // - predict: n + κ = 5 + κ > 0, P positive definite (the base conditions it), Q positive
+    //   definite, all finite: it must be applied;
+    // - update, κ ≥ 0: every weight is ≥ 0, so S = Σ Wᵢ·ΔZᵢΔZᵢᵀ + R ≥ R > 0 and there is no
+    //   gate: it must be applied;
+    // - update, κ < 0: W₀ = κ/(n + κ) < 0 can make S indefinite. With aᵢ = Zᵢ − Z₀ and
+    //   m = Σ_{i≥1} Wᵢ·aᵢ = Z̄ − Z₀, S − R = Σ_{i≥1} Wᵢ·aᵢ² − m², which Σ_{i≥1} Wᵢ = 1 − W₀ > 1
+    //   lets go negative (all aᵢ = a: S − R = W₀·(1 − W₀)·a² < 0). Only then may the update
+    //   be rejected, as RejectedSingular, and the S it reports must show it (S ≤ 0; S is 1×1
+    //   for one bearing). This run happens to have none.
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> exponent(-12.0, 9.0);
     const std::array<Vector2, 2> beacons{Vector2(1.5, 1.5), Vector2(-1.5, 0.5)};
@@ -290,9 +424,16 @@ TEST(Ukf, AbsurdNoiseKeepsTheCovarianceFiniteAndPositiveDefinite) {
             const double r = std::pow(10.0, exponent(rng));
             const OdometryProcessModel model(increment_from_motion(0.01, 0.05, 0.12),
                                              Eigen::Vector2d(q, q).asDiagonal());
-            ukf.predict(model);
-            for (const Vector2& beacon : beacons) {
-                ukf.update(BeaconBearingMeasurement(beacon, 0.7, r));
+            const StepStatus predicted = ukf.predict(model);
+            ASSERT_EQ(predicted, StepStatus::Applied)
+                << "kappa " << kappa << " step " << step << " predict: " << to_string(predicted);
+            for (std::size_t b = 0; b < beacons.size(); ++b) {
+                const auto report = ukf.update(BeaconBearingMeasurement(beacons[b], 0.7, r));
+                const bool justified = kappa < 0.0 && report.status == StepStatus::RejectedSingular
+                                       && !(report.innovation_covariance(0, 0) > 0.0);
+                ASSERT_TRUE(report.status == StepStatus::Applied || justified)
+                    << "kappa " << kappa << " step " << step << " beacon " << b << ": "
+                    << to_string(report.status) << ", S = " << report.innovation_covariance;
             }
             ASSERT_TRUE(ukf.state().allFinite());
             ASSERT_TRUE(ukf.covariance().allFinite());

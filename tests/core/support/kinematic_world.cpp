@@ -22,20 +22,25 @@ KinematicRobot::KinematicRobot(const Pose2& start, const KinematicRobotParams& p
     : pose_(start), params_(params), rng_(seed) {}
 
 void KinematicRobot::drive(const WheelSpeeds& wheels, double dt) {
-    double right = wheels.right * dt;  // ground distance each wheel rolls
-    double left = wheels.left * dt;
-    if (params_.slip_per_metre > 0.0) {
+    const double rolled_right = wheels.right * dt;  // distance each tyre's surface turns
+    const double rolled_left = wheels.left * dt;
+    // The encoders count the wheels' rotation, degrees: rolled distance / circumference · 360.
+    // Slip never reaches them.
+    const double pi = std::numbers::pi;
+    wheel_degrees_[0] +=
+        rolled_right / (pi * params_.right_wheel_diameter) * params_.counts_per_turn;
+    wheel_degrees_[1] += rolled_left / (pi * params_.left_wheel_diameter) * params_.counts_per_turn;
+    // The ground distances: rolled + ε, ε ~ N(0, slip_noise²·|rolled|) per wheel.
+    double right = rolled_right;
+    double left = rolled_left;
+    if (params_.slip_noise > 0.0) {
         std::normal_distribution<double> unit(0.0, 1.0);
-        right += unit(rng_) * params_.slip_per_metre * std::sqrt(std::abs(right));
-        left += unit(rng_) * params_.slip_per_metre * std::sqrt(std::abs(left));
+        right += unit(rng_) * params_.slip_noise * std::sqrt(std::abs(rolled_right));
+        left += unit(rng_) * params_.slip_noise * std::sqrt(std::abs(rolled_left));
     }
     const double v = 0.5 * (right + left) / dt;
     const double w = (right - left) / (params_.wheel_base * dt);
     pose_ = integrate_arc(pose_, v, w, dt);
-    // Wheel rotation in degrees: ground distance / circumference · 360.
-    const double pi = std::numbers::pi;
-    wheel_degrees_[0] += right / (pi * params_.right_wheel_diameter) * params_.counts_per_turn;
-    wheel_degrees_[1] += left / (pi * params_.left_wheel_diameter) * params_.counts_per_turn;
 }
 
 void KinematicRobot::drive(const VelocityCommand& command, double dt) {

@@ -3,6 +3,12 @@
 // encoders that count whole degrees of wheel rotation, and IR sensors computed by an
 // independent ray–segment intersection and the published GP2D120 fit. Nothing here reuses
 // the core's geometry code, so tests compare the core against separate calculations.
+//
+// Slip, as in the simulator (docs/simulator.md, "Errors"): each period a wheel ROLLS
+// s = v·dt (what its encoder counts) but its tyre COVERS s + ε on the ground, with
+// ε ~ N(0, slip_noise²·|s|), independently per wheel and per period. The pose follows the
+// covered distances, the encoders the rolled ones, so slip is odometry error: after rolling
+// a distance S the ground distance of each wheel is off by N(0, slip_noise²·S).
 
 #include <array>
 #include <cstdint>
@@ -20,15 +26,17 @@ struct KinematicRobotParams {
     double left_wheel_diameter = 0.0432;
     double wheel_base = 0.12;
     double counts_per_turn = 360.0;
-    /// Standard deviation of random wheel slip per metre travelled (relative), 0 = none.
-    double slip_per_metre = 0.0;
+    /// Random slip, m^½: the variance of a tyre's ground distance minus its rolled distance
+    /// is slip_noise²·|rolled| per period (see the file comment). 0 = none.
+    double slip_noise = 0.0;
 };
 
 class KinematicRobot {
   public:
     KinematicRobot(const Pose2& start, const KinematicRobotParams& params, unsigned seed = 1);
 
-    /// Holds the wheel speeds for `dt` seconds; the pose follows the exact circular arc.
+    /// Holds the wheel speeds (surface speeds ω·r) for `dt` seconds; the encoders count the
+    /// rolled distances, the pose follows the exact circular arc of the covered ones.
     void drive(const WheelSpeeds& wheels, double dt);
     /// Unicycle form, for controller tests: V and W held for dt.
     void drive(const VelocityCommand& command, double dt);
