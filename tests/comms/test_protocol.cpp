@@ -22,9 +22,12 @@
 #include <vector>
 
 #include "legofeup/comms/protocol.hpp"
+#include "protocol_bytes_test_support.hpp"
 
 namespace legofeup::comms {
 namespace {
+
+using namespace test_bytes;
 
 using Span = std::span<const std::uint8_t>;
 
@@ -36,23 +39,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 void put_bytes(Bytes& bytes, std::size_t offset, std::initializer_list<std::uint8_t> values) {
     ASSERT_LE(offset + values.size(), bytes.size());
     std::copy(values.begin(), values.end(), bytes.begin() + static_cast<std::ptrdiff_t>(offset));
-}
-
-void put_le(Bytes& bytes, std::size_t offset, std::uint64_t value, std::size_t size) {
-    ASSERT_LE(offset + size, bytes.size());
-    for (std::size_t i = 0; i < size; ++i) {
-        bytes[offset + i] = static_cast<std::uint8_t>((value >> (8 * i)) & 0xFF);
-    }
-}
-
-void put_u16(Bytes& bytes, std::size_t offset, std::uint16_t value) {
-    put_le(bytes, offset, value, 2);
-}
-void put_u64(Bytes& bytes, std::size_t offset, std::uint64_t value) {
-    put_le(bytes, offset, value, 8);
-}
-void put_f64(Bytes& bytes, std::size_t offset, double value) {
-    put_u64(bytes, offset, std::bit_cast<std::uint64_t>(value));
 }
 
 std::string hex(Span bytes) {

@@ -16,24 +16,12 @@
 #include <vector>
 
 #include "legofeup/comms/protocol.hpp"
+#include "protocol_bytes_test_support.hpp"
 
 namespace legofeup::comms {
 namespace {
 
-// --- Test-side byte helpers, independent of comms' byte order code --------------------------
-
-void put_le(Bytes& bytes, std::size_t offset, std::uint64_t value, std::size_t size) {
-    ASSERT_LE(offset + size, bytes.size());
-    for (std::size_t i = 0; i < size; ++i) {
-        bytes[offset + i] = static_cast<std::uint8_t>((value >> (8 * i)) & 0xFF);
-    }
-}
-void put_i16(Bytes& bytes, std::size_t offset, std::int16_t value) {
-    put_le(bytes, offset, static_cast<std::uint16_t>(value), 2);
-}
-void put_f64(Bytes& bytes, std::size_t offset, double value) {
-    put_le(bytes, offset, std::bit_cast<std::uint64_t>(value), 8);
-}
+using namespace test_bytes;
 
 /// Bit-for-bit equality of every field of two frames (−0.0 and NaN payloads included).
 void expect_same_frame(const SensorFrame& actual, const SensorFrame& expected) {

@@ -13,7 +13,7 @@
 namespace legofeup {
 namespace {
 
-constexpr unsigned kThetaOutput = 1U << kTheta;
+constexpr unsigned kCompassThetaOutput = 1U << kTheta;
 
 TEST(CompassModel, JacobiansMatchCentralDifferences) {
     const CompassTuning tuning;
@@ -22,18 +22,18 @@ TEST(CompassModel, JacobiansMatchCentralDifferences) {
     for (const StateVector& x : {StateVector(0.1, 0.2, 0.4), StateVector(-1.0, 0.5, 2.5),
                                  StateVector(0.0, 0.0, -3.0), StateVector(1.0, -1.0, -1.2)}) {
         const auto f = [&](const StateVector& s) { return model.predict_state(s); };
-        EXPECT_LT(
-            (model.state_jacobian(x) - testing::central_difference<3, 3>(f, x, 1e-6, kThetaOutput))
-                .cwiseAbs()
-                .maxCoeff(),
-            1e-7);
+        EXPECT_LT((model.state_jacobian(x)
+                   - testing::central_difference<3, 3>(f, x, 1e-6, kCompassThetaOutput))
+                      .cwiseAbs()
+                      .maxCoeff(),
+                  1e-7);
         const auto g = [&](const StateVector& q) { return model.propagate(x, q); };
-        EXPECT_LT(
-            (model.noise_jacobian(x)
-             - testing::central_difference<3, 3>(g, StateVector::Zero().eval(), 1e-6, kThetaOutput))
-                .cwiseAbs()
-                .maxCoeff(),
-            1e-7);
+        EXPECT_LT((model.noise_jacobian(x)
+                   - testing::central_difference<3, 3>(g, StateVector::Zero().eval(), 1e-6,
+                                                       kCompassThetaOutput))
+                      .cwiseAbs()
+                      .maxCoeff(),
+                  1e-7);
         const CompassMeasurement compass(0.3, 1e-2);
         const auto h = [&](const StateVector& s) { return compass.predict_measurement(s); };
         EXPECT_LT((compass.jacobian(x) - testing::central_difference<1, 3>(h, x, 1e-6, 1U))

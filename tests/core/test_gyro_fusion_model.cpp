@@ -11,7 +11,7 @@
 namespace legofeup {
 namespace {
 
-constexpr unsigned kThetaOutput = 1U << kMotionTheta;
+constexpr unsigned kMotionThetaOutput = 1U << kMotionTheta;
 
 TEST(GyroFusionModel, PropagatesEquation24) {
     const GyroFusionProcessModel model(0.1, 0.5, -1.0, GyroFusionTuning{});
@@ -36,11 +36,11 @@ TEST(GyroFusionModel, JacobiansMatchCentralDifferences) {
         x << uniform(-2, 2), uniform(-2, 2), uniform(-kPi, kPi), uniform(-0.5, 0.5), uniform(-3, 3);
         const auto f = [&](const MotionStateVector& s) { return model.predict_state(s); };
         const MotionCovariance numeric =
-            testing::central_difference<5, 5>(f, x, 1e-6, kThetaOutput);
+            testing::central_difference<5, 5>(f, x, 1e-6, kMotionThetaOutput);
         EXPECT_LT((model.state_jacobian(x) - numeric).cwiseAbs().maxCoeff(), 1e-7);
         const auto g = [&](const MotionStateVector& q) { return model.propagate(x, q); };
         const MotionCovariance numeric_q = testing::central_difference<5, 5>(
-            g, MotionStateVector::Zero().eval(), 1e-6, kThetaOutput);
+            g, MotionStateVector::Zero().eval(), 1e-6, kMotionThetaOutput);
         EXPECT_LT((model.noise_jacobian(x) - numeric_q).cwiseAbs().maxCoeff(), 1e-7);
 
         const EncoderVelocityMeasurement encoders({0.1, 0.2}, 1e-3, 0.5);

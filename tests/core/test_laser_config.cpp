@@ -17,7 +17,7 @@ const ConfigIssue* find_issue(const std::vector<ConfigIssue>& issues, const std:
     return found == issues.end() ? nullptr : &*found;
 }
 
-LoopConfig laser_config() {
+LoopConfig laser_localisation_config() {
     LoopConfig config;
     config.lesson.localisation = Localisation::Laser;
     config.map = testing::laser_test_room();
@@ -31,13 +31,13 @@ TEST(LaserConfig, LocalisationNameRoundTrips) {
 }
 
 TEST(LaserConfig, DefaultsWithAMapAreValid) {
-    EXPECT_TRUE(validate(laser_config()).empty());
+    EXPECT_TRUE(validate(laser_localisation_config()).empty());
     // The map is only required when the laser localises.
     EXPECT_TRUE(validate(LoopConfig{}).empty());
 }
 
 TEST(LaserConfig, LaserLocalisationNeedsANonEmptyMap) {
-    LoopConfig config = laser_config();
+    LoopConfig config = laser_localisation_config();
     config.map = nullptr;
     auto issues = validate(config);
     ASSERT_EQ(issues.size(), 1u);
@@ -51,7 +51,7 @@ TEST(LaserConfig, LaserLocalisationNeedsANonEmptyMap) {
 
 TEST(LaserConfig, RefusesAbsurdTuningsWithFieldValueAndReason) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    LoopConfig config = laser_config();
+    LoopConfig config = laser_localisation_config();
     LaserTuning& laser = config.lesson.laser;
     laser.q_x_static = -1e-3;
     laser.q_theta_dynamic = nan;
@@ -83,7 +83,7 @@ TEST(LaserConfig, RefusesAbsurdTuningsWithFieldValueAndReason) {
 }
 
 TEST(LaserConfig, AcceptsTheLessonsExtremes) {
-    LoopConfig config = laser_config();
+    LoopConfig config = laser_localisation_config();
     LaserTuning& laser = config.lesson.laser;
     laser.q_x_static = 0.0;  // no slip at rest
     laser.q_y_static = 0.0;

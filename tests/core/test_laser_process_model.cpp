@@ -16,7 +16,7 @@
 namespace legofeup {
 namespace {
 
-constexpr unsigned kThetaOutput = 1U << kTheta;
+constexpr unsigned kLaserThetaOutput = 1U << kTheta;
 
 double max_abs(const Eigen::MatrixXd& m) {
     return m.cwiseAbs().maxCoeff();
@@ -35,13 +35,13 @@ TEST(LaserProcessModel, JacobiansMatchCentralDifferences) {
         const LaserProcessModel model(increment, x(kTheta), tuning);
         const auto f = [&](const StateVector& s) { return model.predict_state(s); };
         EXPECT_LT(max_abs(model.state_jacobian(x)
-                          - testing::central_difference<3, 3>(f, x, 1e-6, kThetaOutput)),
+                          - testing::central_difference<3, 3>(f, x, 1e-6, kLaserThetaOutput)),
                   1e-8)
             << "trial " << trial;
         const auto g = [&](const StateVector& q) { return model.propagate(x, q); };
         EXPECT_LT(max_abs(model.noise_jacobian(x)
                           - testing::central_difference<3, 3>(g, StateVector::Zero().eval(), 1e-6,
-                                                              kThetaOutput)),
+                                                              kLaserThetaOutput)),
                   1e-8);
     }
 }

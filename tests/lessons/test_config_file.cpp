@@ -14,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The problems an InputError carries, as messages.
-std::vector<std::string> problems_of(const std::function<void()>& action) {
+std::vector<std::string> problem_messages_of(const std::function<void()>& action) {
     try {
         action();
     } catch (const InputError& error) {
@@ -78,7 +78,7 @@ TEST(ConfigFile, IntegersAreAcceptedWhereNumbersAreExpected) {
 TEST(ConfigFile, ReportsEveryProblemWithFileLineKeyAndReason) {
     RunConfig config;
     const RunConfig before = config;
-    const auto problems = problems_of([&] {
+    const auto problems = problem_messages_of([&] {
         apply_config_toml(R"(seed = 1
 [filter]
 q1 = 1e-7
@@ -104,7 +104,7 @@ zoom = 2
 
 TEST(ConfigFile, SyntaxErrorsPointAtTheirLine) {
     RunConfig config;
-    const auto problems = problems_of(
+    const auto problems = problem_messages_of(
         [&] { apply_config_toml("seed = 1\n[filter\nq11 = 1\n", "broken.toml", config); });
     ASSERT_EQ(problems.size(), 1u);
     EXPECT_EQ(problems[0].rfind("broken.toml:2: ", 0), 0u) << problems[0];
@@ -112,9 +112,10 @@ TEST(ConfigFile, SyntaxErrorsPointAtTheirLine) {
 
 TEST(ConfigFile, RefusesNegativeSeedsAndLapsOutOfRange) {
     RunConfig config;
-    EXPECT_EQ(problems_of([&] { apply_config_toml("seed = -3", "s.toml", config); }).front(),
-              "s.toml:1: seed = -3: must not be negative");
-    EXPECT_EQ(problems_of([&] { apply_config_toml("laps = 0", "s.toml", config); }).front(),
+    EXPECT_EQ(
+        problem_messages_of([&] { apply_config_toml("seed = -3", "s.toml", config); }).front(),
+        "s.toml:1: seed = -3: must not be negative");
+    EXPECT_EQ(problem_messages_of([&] { apply_config_toml("laps = 0", "s.toml", config); }).front(),
               "s.toml:1: laps = 0: must be between 1 and 1000");
 }
 
@@ -144,7 +145,8 @@ TEST(ConfigFile, LoadsFilesAndResolvesTheWorldRelativeToThem) {
     const RunConfig config = load_config_file(dir / "run.toml", RunConfig{});
     EXPECT_EQ(config.laps, 4);
     EXPECT_EQ(fs::path(config.world_file), dir / "my_world.toml");
-    const auto missing = problems_of([&] { load_config_file(dir / "absent.toml", RunConfig{}); });
+    const auto missing =
+        problem_messages_of([&] { load_config_file(dir / "absent.toml", RunConfig{}); });
     ASSERT_EQ(missing.size(), 1u);
     EXPECT_NE(missing[0].find("cannot open the configuration file"), std::string::npos);
     fs::remove_all(dir);

@@ -16,8 +16,8 @@
 namespace legofeup::lessons {
 namespace {
 
-constexpr std::uint64_t kFirstSeed = 1001;  // not the seeds experiment f was tuned on
-constexpr std::size_t kSeeds = 8;
+constexpr std::uint64_t kResolutionFirstSeed = 1001;  // not the seeds experiment f was tuned on
+constexpr std::size_t kResolutionSeeds = 8;
 constexpr std::array<double, 3> kResolutions = {180.0, 360.0, 720.0};
 
 struct Errors {
@@ -34,22 +34,22 @@ struct Errors {
 TEST(EncoderResolutionRuns, ExperimentFLocalisesAsWellAt180And720CountsAsAt360) {
     std::vector<ResolvedRun> runs;
     for (const double counts_per_turn : kResolutions) {
-        for (std::uint64_t i = 0; i < kSeeds; ++i) {
+        for (std::uint64_t i = 0; i < kResolutionSeeds; ++i) {
             RunConfig config = find_experiment("f")->config;
             config.robot.counts_per_turn = counts_per_turn;
-            config.seed = kFirstSeed + i;
+            config.seed = kResolutionFirstSeed + i;
             runs.push_back(resolve(config));
         }
     }
     const std::vector<RunResult> results = analysis::run_batch(runs, 0);
     std::array<Errors, kResolutions.size()> errors{};
     for (std::size_t r = 0; r < kResolutions.size(); ++r) {
-        for (std::size_t i = 0; i < kSeeds; ++i) {
-            const RunMetrics& m = results[r * kSeeds + i].metrics;
+        for (std::size_t i = 0; i < kResolutionSeeds; ++i) {
+            const RunMetrics& m = results[r * kResolutionSeeds + i].metrics;
             EXPECT_LT(m.rms_position_error, 0.06)
-                << kResolutions[r] << " counts a turn, seed " << kFirstSeed + i;
-            errors[r].mean_rms += m.rms_position_error / static_cast<double>(kSeeds);
-            errors[r].mean_final += m.final_position_error / static_cast<double>(kSeeds);
+                << kResolutions[r] << " counts a turn, seed " << kResolutionFirstSeed + i;
+            errors[r].mean_rms += m.rms_position_error / static_cast<double>(kResolutionSeeds);
+            errors[r].mean_final += m.final_position_error / static_cast<double>(kResolutionSeeds);
         }
         std::printf("%g counts a turn: mean RMS position error %.4f m, mean final %.4f m\n",
                     kResolutions[r], errors[r].mean_rms, errors[r].mean_final);

@@ -14,8 +14,8 @@
 namespace legofeup::lessons {
 namespace {
 
-constexpr std::uint64_t kFirstSeed = 1001;
-constexpr int kSeeds = 20;
+constexpr std::uint64_t kUnseenFirstSeed = 1001;
+constexpr int kUnseenSeeds = 20;
 
 TEST(Experiments, PresetsAreTheGuidesSixSteps) {
     const auto& experiments = legofeup_experiments();
@@ -142,7 +142,7 @@ TEST_P(ExperimentOutcomes, EachStepShowsWhatTheGuideSays) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TwentySeeds, ExperimentOutcomes,
-                         ::testing::Range(kFirstSeed, kFirstSeed + kSeeds));
+                         ::testing::Range(kUnseenFirstSeed, kUnseenFirstSeed + kUnseenSeeds));
 
 }  // namespace
 }  // namespace legofeup::lessons

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "input_problems_test_support.hpp"
 #include "legofeup/core/angles.hpp"
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/config_schema.hpp"
@@ -25,15 +26,6 @@ namespace legofeup::lessons {
 namespace {
 
 using namespace scratch_testing;
-
-std::vector<InputProblem> problems_of(const std::function<void()>& action) {
-    try {
-        action();
-    } catch (const InputError& error) {
-        return error.problems();
-    }
-    return {};
-}
 
 /// A 4 m × 3 m room at 0.5 m per cell (8 × 6 cells) walled all round, origin (−2, −1.5).
 void write_room_map(const fs::path& yaml) {
@@ -75,7 +67,7 @@ TEST(WorldMap, AnUnusableMapIsReportedInItsFileAndAtTheWorldsLine) {
                "occupied_thresh: 0.65\nfree_thresh: 0.196\nnegate: 0\n");
     write_file(dir / "world.toml", "name = \"w\"\n\n[map]\nfile = \"bad.yaml\"\n");
     const std::vector<InputProblem> problems =
-        problems_of([&] { load_world_file(dir / "world.toml"); });
+        testing::input_problems_of([&] { load_world_file(dir / "world.toml"); });
     ASSERT_EQ(problems.size(), 2U);
     EXPECT_EQ(problems[0].source, (dir / "bad.yaml").string());
     EXPECT_EQ(problems[0].line, 2);
@@ -87,7 +79,7 @@ TEST(WorldMap, AnUnusableMapIsReportedInItsFileAndAtTheWorldsLine) {
     EXPECT_EQ(problems[1].reason, "the map file is unusable");
 
     write_file(dir / "world.toml", "[map]\nfile = \"absent.yaml\"\n");
-    const auto absent = problems_of([&] { load_world_file(dir / "world.toml"); });
+    const auto absent = testing::input_problems_of([&] { load_world_file(dir / "world.toml"); });
     ASSERT_EQ(absent.size(), 2U);
     EXPECT_NE(absent[0].reason.find("cannot open the map file"), std::string::npos);
     EXPECT_EQ(absent[1].key, "map.file");
@@ -118,12 +110,12 @@ TEST(WorldMap, ASurveyedMapIsReadBesideTheWorldsMapAndGoesToTheFilter) {
     EXPECT_EQ(resolve(config).loop.map->origin().x, -2.1);  // the survey, not the world
 
     // Without file, or with an unusable survey: errors at the world's lines.
-    auto problems =
-        problems_of([&] { parse_world("[map]\nsurveyed = \"room.yaml\"\n", "w.toml", dir); });
+    auto problems = testing::input_problems_of(
+        [&] { parse_world("[map]\nsurveyed = \"room.yaml\"\n", "w.toml", dir); });
     ASSERT_EQ(problems.size(), 1U);
     EXPECT_EQ(problems[0].key, "map");
     EXPECT_EQ(problems[0].reason, "needs file = \"<map>.yaml\"");
-    problems = problems_of([&] {
+    problems = testing::input_problems_of([&] {
         parse_world("[map]\nfile = \"room.yaml\"\nsurveyed = \"absent.yaml\"\n", "w.toml", dir);
     });
     ASSERT_EQ(problems.size(), 2U);
@@ -135,16 +127,18 @@ TEST(WorldMap, ASurveyedMapIsReadBesideTheWorldsMapAndGoesToTheFilter) {
 TEST(WorldMap, MapTablesAndStartPosesAreChecked) {
     const fs::path dir = temp_dir();
     write_room_map(dir / "room.yaml");
-    auto problems = problems_of([&] { parse_world("[map]\nfile = 3\n", "w.toml", dir); });
+    auto problems =
+        testing::input_problems_of([&] { parse_world("[map]\nfile = 3\n", "w.toml", dir); });
     ASSERT_EQ(problems.size(), 1U);
     EXPECT_EQ(problems[0].key, "map.file");
     EXPECT_EQ(problems[0].line, 2);
-    problems = problems_of([&] { parse_world("[map]\nimage = \"x\"\n", "w.toml", dir); });
+    problems =
+        testing::input_problems_of([&] { parse_world("[map]\nimage = \"x\"\n", "w.toml", dir); });
     ASSERT_EQ(problems.size(), 2U);  // the unknown key, and no file
     EXPECT_EQ(problems[0].key, "map");
     EXPECT_EQ(problems[1].key, "map.image");
     // (−1.8, 0) is in the west wall's column of cells (x −2 … −1.5).
-    problems = problems_of([&] {
+    problems = testing::input_problems_of([&] {
         parse_world("[start]\nx = -1.8\ny = 0.0\n[map]\nfile = \"room.yaml\"\n", "w.toml", dir);
     });
     ASSERT_EQ(problems.size(), 1U);
@@ -334,7 +328,7 @@ TEST(LaserSettings, WrittenNonDefaultValuesReadBackToTheSameValues) {
 
 TEST(LaserSettings, BadValuesAreReportedWithFileLineAndKey) {
     RunConfig config;
-    const auto problems = problems_of([&] {
+    const auto problems = testing::input_problems_of([&] {
         apply_config_toml(
             "[laser]\nicp_metric = \"nearest\"\nbeam_count = -3\n"
             "mount_heading_deg = \"left\"\n[kidnap]\nheading_dg = 3\n",
@@ -357,7 +351,8 @@ TEST(LaserSettings, ValidationProblemsPointAtTheSettingsLine) {
     write_file(dir / "run.toml",
                "world = \"office\"\n[localisation]\nmethod = \"laser\"\n[laser]\n"
                "icp_trim_fraction = 0.95\nq_x_static = -1\n");
-    const auto problems = problems_of([&] { resolve(load_config_file(dir / "run.toml", {})); });
+    const auto problems =
+        testing::input_problems_of([&] { resolve(load_config_file(dir / "run.toml", {})); });
     ASSERT_EQ(problems.size(), 2U);
     EXPECT_EQ(problems[0].line, 5);
     EXPECT_EQ(problems[0].key, "laser.icp_trim_fraction");
@@ -397,7 +392,8 @@ TEST(LaserMap, ALaserMapFileIsReadRelativeToTheConfiguration) {
 
     // A map that cannot be read: its own problem, then the configuration's line.
     write_file(dir / "run.toml", "world = \"office\"\n\n[laser]\nmap = \"maps/none.yaml\"\n");
-    const auto problems = problems_of([&] { resolve(load_config_file(dir / "run.toml", {})); });
+    const auto problems =
+        testing::input_problems_of([&] { resolve(load_config_file(dir / "run.toml", {})); });
     ASSERT_EQ(problems.size(), 2U);
     EXPECT_NE(problems[0].reason.find("cannot open the map file"), std::string::npos);
     EXPECT_EQ(problems[1].source, (dir / "run.toml").string());
@@ -409,7 +405,7 @@ TEST(LaserMap, ALaserMapFileIsReadRelativeToTheConfiguration) {
 TEST(LaserMap, LaserLocalisationWithoutAMapIsRefusedAtItsSetting) {
     RunConfig config;
     apply_config_toml("[localisation]\nmethod = \"laser\"\n", "nomap.toml", config);
-    const auto problems = problems_of([&] { resolve(config); });
+    const auto problems = testing::input_problems_of([&] { resolve(config); });
     ASSERT_EQ(problems.size(), 1U);
     EXPECT_EQ(problems[0].key, "laser.map");
     EXPECT_NE(problems[0].reason.find("map"), std::string::npos);
@@ -422,7 +418,7 @@ TEST(LaserMap, TheFiltersBeamCountMustBeTheSimulatedScanners) {
     config.physical.laser_scanner.enabled = true;
     config.lesson.laser.geometry.beam_count = 600;
     config.lesson.laser.geometry.angle_min = -1.5;
-    const auto problems = problems_of([&] { resolve(config); });
+    const auto problems = testing::input_problems_of([&] { resolve(config); });
     ASSERT_EQ(problems.size(), 1U);
     EXPECT_EQ(problems[0].key, "laser.beam_count");
     EXPECT_EQ(problems[0].reason,
@@ -459,7 +455,7 @@ TEST(RectangleRoutine, DrivesTheRectangleCounterClockwiseFromItsCorner) {
     config.duration = 0.0;
 
     config.routine.rectangle_size = {0.0, 2.5};
-    const auto problems = problems_of([&] { resolve(config); });
+    const auto problems = testing::input_problems_of([&] { resolve(config); });
     ASSERT_EQ(problems.size(), 1U);
     EXPECT_EQ(problems[0].key, "control.rectangle_size");
 }

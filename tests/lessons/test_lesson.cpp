@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "input_problems_test_support.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/lesson.hpp"
 
@@ -64,7 +65,7 @@ description = "Accurate."
 )";
 
 // The problems parse_lesson reports for `text` ("" when it parses).
-std::vector<InputProblem> problems_of(const std::string& text) {
+std::vector<InputProblem> lesson_problems_of(const std::string& text) {
     try {
         parse_lesson(text, "bad.toml");
     } catch (const InputError& error) {
@@ -83,14 +84,6 @@ InputProblem problem_at(const std::vector<InputProblem>& problems, int line) {
     }
     EXPECT_EQ(found.size(), 1u) << "problems at line " << line;
     return found.empty() ? InputProblem{} : found.front();
-}
-
-std::string all_messages(const std::vector<InputProblem>& problems) {
-    std::string text;
-    for (const InputProblem& problem : problems) {
-        text += problem.message() + "\n";
-    }
-    return text;
 }
 
 // A copy of the good lesson with `from` replaced by `to` (which must occur once).
@@ -169,38 +162,39 @@ TEST(Lesson, GradingIsOptionalWithDefaults) {
 }
 
 TEST(Lesson, UnknownKeysAreNamedWithTheirLineAndASuggestion) {
-    const auto top = problems_of(edited("goals = ", "gaols = \"x\"\ngoals = "));
+    const auto top = lesson_problems_of(edited("goals = ", "gaols = \"x\"\ngoals = "));
     EXPECT_EQ(problem_at(top, 3).message(),
               "bad.toml:3: gaols: unknown key (did you mean 'goals'?)");
-    const auto step = problems_of(edited("observe = \"The walls.\"", "observ = \"The walls.\""));
+    const auto step =
+        lesson_problems_of(edited("observe = \"The walls.\"", "observ = \"The walls.\""));
     EXPECT_EQ(problem_at(step, 33).key, "step.observ");
     EXPECT_NE(problem_at(step, 33).reason.find("did you mean 'observe'"), std::string::npos);
     // …and the step now lacks its `observe`, reported at the step's header.
     EXPECT_EQ(problem_at(step, 29).key, "step.observe");
-    const auto setting = problems_of(edited("r11 = 1e-6", "r1 = 1e-6"));
+    const auto setting = lesson_problems_of(edited("r11 = 1e-6", "r1 = 1e-6"));
     EXPECT_EQ(problem_at(setting, 39).message(),
               "bad.toml:39: filter.r1: unknown setting (did you mean 'filter.r11'?)");
 }
 
 TEST(Lesson, MissingOrEmptyTextsAreProblems) {
-    const auto missing = problems_of(edited("expectation = \"It snaps.\"\n", ""));
+    const auto missing = lesson_problems_of(edited("expectation = \"It snaps.\"\n", ""));
     const InputProblem at_header = problem_at(missing, 29);
     EXPECT_EQ(at_header.key, "step.expectation");
     EXPECT_NE(at_header.reason.find("missing"), std::string::npos);
-    const auto empty = problems_of(edited("text = \"Why?\"", "text = \"  \""));
+    const auto empty = lesson_problems_of(edited("text = \"Why?\"", "text = \"  \""));
     EXPECT_EQ(problem_at(empty, 16).key, "step.question.text");
-    const auto wrong_type = problems_of(edited("title = \"First\"", "title = 3"));
+    const auto wrong_type = lesson_problems_of(edited("title = \"First\"", "title = 3"));
     EXPECT_EQ(problem_at(wrong_type, 10).message(),
               "bad.toml:10: step.title = 3: must be a quoted text");
-    const auto no_title = problems_of(edited("title = \"A demo lesson\"\n", ""));
+    const auto no_title = lesson_problems_of(edited("title = \"A demo lesson\"\n", ""));
     EXPECT_EQ(problem_at(no_title, 1).key, "title");
 }
 
 TEST(Lesson, DuplicateIdsAreProblems) {
-    const auto steps = problems_of(edited("id = \"two\"", "id = \"one\""));
+    const auto steps = lesson_problems_of(edited("id = \"two\"", "id = \"one\""));
     EXPECT_EQ(problem_at(steps, 30).message(),
               "bad.toml:30: step.id = \"one\": duplicate step id (first used on line 9)");
-    const auto questions = problems_of(edited("id = \"q2\"", "id = \"q1\""));
+    const auto questions = lesson_problems_of(edited("id = \"q2\"", "id = \"q1\""));
     EXPECT_NE(problem_at(questions, 18).reason.find("duplicate question id"), std::string::npos);
 }
 
@@ -223,7 +217,8 @@ TEST(Lesson, MalformedChecksAreProblems) {
         {"association < 3", "no metric 'association'"},
     };
     for (const Case& c : cases) {
-        const auto problems = problems_of(edited("final_position_error_m > 0.2", c.expression));
+        const auto problems =
+            lesson_problems_of(edited("final_position_error_m > 0.2", c.expression));
         const InputProblem problem = problem_at(problems, 21);
         EXPECT_EQ(problem.key, "step.check.expression") << c.expression;
         EXPECT_NE(problem.reason.find(c.reason_part), std::string::npos)
@@ -233,31 +228,32 @@ TEST(Lesson, MalformedChecksAreProblems) {
 
 TEST(Lesson, BadPresetsAreProblems) {
     // A value the configuration reader refuses, and one only resolving the run refuses.
-    const auto type = problems_of(edited("wall_updates = false", "wall_updates = 3"));
+    const auto type = lesson_problems_of(edited("wall_updates = false", "wall_updates = 3"));
     EXPECT_EQ(problem_at(type, 27).message(),
               "bad.toml:27: filter.wall_updates = 3: must be true or false");
-    const auto range = problems_of(edited("r11 = 1e-6", "r11 = -1.0"));
+    const auto range = lesson_problems_of(edited("r11 = 1e-6", "r11 = -1.0"));
     EXPECT_EQ(problem_at(range, 39).key, "filter.r11");
     EXPECT_NE(problem_at(range, 39).reason.find("between"), std::string::npos);
     // A bad [base] setting is reported once, not once per step.
-    const auto base = problems_of(edited("q11 = 2e-7", "q11 = -1.0"));
-    EXPECT_EQ(base.size(), 1u) << all_messages(base);
+    const auto base = lesson_problems_of(edited("q11 = 2e-7", "q11 = -1.0"));
+    EXPECT_EQ(base.size(), 1u) << testing::all_messages(base);
     EXPECT_EQ(problem_at(base, 6).key, "filter.q11");
 }
 
 TEST(Lesson, BadGradingIsAProblem) {
-    const auto step = problems_of(edited("step = \"two\"", "step = \"three\""));
+    const auto step = lesson_problems_of(edited("step = \"two\"", "step = \"three\""));
     EXPECT_EQ(problem_at(step, 42).message(),
               "bad.toml:42: grading.step = \"three\": no step with this id (the steps are: one, "
               "two)");
-    const auto tunable = problems_of(edited("\"initial.var_x\"", "\"filtr\", \"initial.var\""));
-    EXPECT_EQ(tunable.size(), 2u) << all_messages(tunable);
+    const auto tunable =
+        lesson_problems_of(edited("\"initial.var_x\"", "\"filtr\", \"initial.var\""));
+    EXPECT_EQ(tunable.size(), 2u) << testing::all_messages(tunable);
     EXPECT_NE(tunable[0].reason.find("did you mean 'filter'"), std::string::npos);
     EXPECT_EQ(tunable[1].value, "\"initial.var\"");
-    const auto seeds = problems_of(edited("seeds = 5", "seeds = 0"));
+    const auto seeds = lesson_problems_of(edited("seeds = 5", "seeds = 0"));
     EXPECT_EQ(problem_at(seeds, 43).message(),
               "bad.toml:43: grading.seeds = 0: must be between 1 and 100000");
-    const auto check = problems_of(edited("<= 0.05", "<= fast"));
+    const auto check = lesson_problems_of(edited("<= 0.05", "<= fast"));
     EXPECT_EQ(problem_at(check, 47).key, "grading.check.expression");
 }
 
@@ -266,8 +262,8 @@ TEST(Lesson, EveryProblemIsReportedAtOnceTopToBottom) {
     text.replace(text.find("observe = \"The ellipse.\""), 24, "obsrve = \"The ellipse.\"");
     text.replace(text.find("> 0.2"), 5, "> x");
     text.replace(text.find("step = \"two\""), 12, "step = \"nine\"");
-    const auto problems = problems_of(text);
-    ASSERT_EQ(problems.size(), 4u) << all_messages(problems);
+    const auto problems = lesson_problems_of(text);
+    ASSERT_EQ(problems.size(), 4u) << testing::all_messages(problems);
     EXPECT_EQ(problems[0].line, 8);   // [[step]] one lacks `observe`
     EXPECT_EQ(problems[1].line, 12);  // the misspelt key
     EXPECT_EQ(problems[2].line, 21);  // the check
@@ -275,12 +271,13 @@ TEST(Lesson, EveryProblemIsReportedAtOnceTopToBottom) {
 }
 
 TEST(Lesson, SyntaxErrorsAndEmptyLessonsAreProblems) {
-    const auto syntax = problems_of("id = \"x\"\ntitle = \n");
+    const auto syntax = lesson_problems_of("id = \"x\"\ntitle = \n");
     ASSERT_EQ(syntax.size(), 1u);
     EXPECT_EQ(syntax[0].line, 2);
-    const auto no_steps = problems_of("id = \"x\"\ntitle = \"t\"\ngoals = \"g\"\n");
+    const auto no_steps = lesson_problems_of("id = \"x\"\ntitle = \"t\"\ngoals = \"g\"\n");
     EXPECT_EQ(problem_at(no_steps, 1).reason, "a lesson needs at least one [[step]]");
-    const auto step_table = problems_of(edited("[[step]]\nid = \"two\"", "[step.x]\nid = \"two\""));
+    const auto step_table =
+        lesson_problems_of(edited("[[step]]\nid = \"two\"", "[step.x]\nid = \"two\""));
     EXPECT_FALSE(step_table.empty());
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "input_problems_test_support.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/map_file.hpp"
 #include "scratch_dir_test_support.hpp"
@@ -51,19 +52,8 @@ std::string p5(int width, int height, const std::vector<int>& values, int maxval
     return bytes;
 }
 
-/// The problems of an InputError thrown by `action` (none if it did not throw).
 template <class Action>
-std::vector<InputProblem> problems_of(Action action) {
-    try {
-        action();
-    } catch (const InputError& error) {
-        return error.problems();
-    }
-    return {};
-}
-
-template <class Action>
-std::string message_of(Action action) {
+std::string map_error_of(Action action) {
     try {
         action();
     } catch (const InputError& error) {
@@ -172,7 +162,8 @@ TEST(MapFile, AnAbsoluteImagePathIsUsedAsItIs) {
 
 /// The single problem of a map.yaml with `yaml` (and a valid 1×1 image).
 InputProblem yaml_problem(const std::string& yaml) {
-    const std::vector<InputProblem> problems = problems_of([&] { load(yaml, p5(1, 1, {0})); });
+    const std::vector<InputProblem> problems =
+        testing::input_problems_of([&] { load(yaml, p5(1, 1, {0})); });
     EXPECT_EQ(problems.size(), 1U);
     return problems.empty() ? InputProblem{} : problems.front();
 }
@@ -197,7 +188,7 @@ TEST(MapFile, BadResolutionIsReportedAtItsLine) {
         EXPECT_NE(problem.source.find("map.yaml"), std::string::npos);
     }
     const std::string message =
-        message_of([] { load(with_line(2, "resolution: -0.05"), p5(1, 1, {0})); });
+        map_error_of([] { load(with_line(2, "resolution: -0.05"), p5(1, 1, {0})); });
     EXPECT_NE(message.find("map.yaml:2: resolution = -0.05: must be greater than 0 and at most "
                            "10 m per pixel"),
               std::string::npos)
@@ -262,7 +253,7 @@ TEST(MapFile, NegateModeUnknownDuplicateAndMissingFieldsAreNamed) {
 }
 
 TEST(MapFile, EveryProblemOfAFileIsListedInLineOrder) {
-    const std::vector<InputProblem> problems = problems_of([] {
+    const std::vector<InputProblem> problems = testing::input_problems_of([] {
         load(
             "image: map.pgm\nresolution: -1\norigin: [0, 0]\noccupied_thresh: 2\n"
             "free_thresh: 0.1\nnegate: 0\n",
@@ -288,7 +279,7 @@ TEST(MapFile, AMissingImageIsReportedAtTheYamlsImageLine) {
     const fs::path dir = temp_dir();
     write_file(dir / "map.yaml", yaml_text("nowhere.pgm"));
     const std::vector<InputProblem> problems =
-        problems_of([&] { load_map_file(dir / "map.yaml"); });
+        testing::input_problems_of([&] { load_map_file(dir / "map.yaml"); });
     ASSERT_EQ(problems.size(), 1U);
     EXPECT_EQ(problems[0].source, (dir / "map.yaml").string());
     EXPECT_EQ(problems[0].line, 1);
@@ -296,7 +287,7 @@ TEST(MapFile, AMissingImageIsReportedAtTheYamlsImageLine) {
     EXPECT_EQ(problems[0].value, "nowhere.pgm");
     EXPECT_NE(problems[0].reason.find((dir / "nowhere.pgm").string()), std::string::npos);
     // And a missing YAML file.
-    EXPECT_NE(message_of([&] { load_map_file(dir / "absent.yaml"); }).find("cannot open"),
+    EXPECT_NE(map_error_of([&] { load_map_file(dir / "absent.yaml"); }).find("cannot open"),
               std::string::npos);
 }
 
@@ -304,7 +295,8 @@ TEST(MapFile, AMissingImageIsReportedAtTheYamlsImageLine) {
 
 /// The single problem of map.pgm with `image` (and a valid YAML file).
 InputProblem image_problem(const std::string& image) {
-    const std::vector<InputProblem> problems = problems_of([&] { load(yaml_text(), image); });
+    const std::vector<InputProblem> problems =
+        testing::input_problems_of([&] { load(yaml_text(), image); });
     EXPECT_EQ(problems.size(), 1U);
     return problems.empty() ? InputProblem{} : problems.front();
 }
@@ -328,7 +320,7 @@ TEST(MapFile, PgmHeaderProblemsNameTheHeaderAndItsLine) {
     EXPECT_EQ(problem.reason, "the maxval 0 must be between 1 and 65535");
     problem = image_problem("P5\n1 1\n");
     EXPECT_EQ(problem.reason, "expected the maxval (a whole number), found the end of the file");
-    const std::string message = message_of([] { load(yaml_text(), "P5\n\n\nx 1\n255\n"); });
+    const std::string message = map_error_of([] { load(yaml_text(), "P5\n\n\nx 1\n255\n"); });
     EXPECT_NE(message.find("map.pgm:4: PGM header: expected the width"), std::string::npos)
         << message;
 }
@@ -344,7 +336,7 @@ TEST(MapFile, TooFewOrTooManyPixelsAreCounted) {
     EXPECT_EQ(problem.reason, "expected 2×1 = 2 pixels (16-bit), found 2 and a half");
     problem = image_problem("P2\n3 2\n255\n0 0 0\n0 0\n");
     EXPECT_EQ(problem.reason, "expected 3×2 = 6 pixels, found 5");
-    const std::string message = message_of([] { load(yaml_text(), p5(1, 2, {0})); });
+    const std::string message = map_error_of([] { load(yaml_text(), p5(1, 2, {0})); });
     EXPECT_NE(message.find("map.pgm: expected 1×2 = 2 pixels (8-bit), found 1"), std::string::npos)
         << message;
 }

@@ -27,7 +27,7 @@ namespace {
 
 using namespace run_log_testing;
 
-SensorFrame base_frame(std::uint32_t sequence) {
+SensorFrame laser_base_frame(std::uint32_t sequence) {
     SensorFrame frame;
     frame.time = 0.05 * sequence;
     frame.sequence = sequence;
@@ -40,9 +40,9 @@ SensorFrame base_frame(std::uint32_t sequence) {
 /// A URG-like scan (682 beams) with every kind of value: error codes 0, 1, 2 and others
 /// below 20, the smallest distance, the largest 16-bit value; a scan of no beams; the
 /// largest scan; a frame without one; a three-beam scan next to a compass reading.
-std::vector<SensorFrame> frames() {
+std::vector<SensorFrame> laser_frames() {
     std::vector<SensorFrame> out;
-    SensorFrame urg = base_frame(1);
+    SensorFrame urg = laser_base_frame(1);
     urg.has_laser_scan = true;
     urg.laser.beam_count = 682;
     for (std::size_t i = 0; i < 682; ++i) {
@@ -55,18 +55,18 @@ std::vector<SensorFrame> frames() {
     urg.laser.range_mm[4] = kRangeFirstValid;
     urg.laser.range_mm[681] = 65535;
     out.push_back(urg);
-    SensorFrame empty = base_frame(2);
+    SensorFrame empty = laser_base_frame(2);
     empty.has_laser_scan = true;
     out.push_back(empty);
-    SensorFrame largest = base_frame(3);
+    SensorFrame largest = laser_base_frame(3);
     largest.has_laser_scan = true;
     largest.laser.beam_count = kMaxScanBeams;
     for (std::size_t i = 0; i < static_cast<std::size_t>(kMaxScanBeams); ++i) {
         largest.laser.range_mm[i] = static_cast<std::uint16_t>(1000 + i);
     }
     out.push_back(largest);
-    out.push_back(base_frame(4));
-    SensorFrame small = base_frame(5);
+    out.push_back(laser_base_frame(4));
+    SensorFrame small = laser_base_frame(5);
     small.has_laser_scan = true;
     small.laser.beam_count = 3;
     small.laser.range_mm[0] = 1234;
@@ -78,24 +78,24 @@ std::vector<SensorFrame> frames() {
     return out;
 }
 
-/// Records frames(), then a step without a frame, with an empty configuration block.
-fs::path record(const std::string& name) {
+/// Records laser_frames(), then a step without a frame, with an empty configuration block.
+fs::path record_laser_log(const std::string& name) {
     LoopSnapshot missing;
     missing.time = 0.3;
     missing.frame.time = 0.3;
     missing.frame.has_laser_scan = true;  // whatever a missing frame holds is not recorded
     missing.frame.laser.beam_count = 5;
-    return record_frames(name, "laser scans", frames(), LoopSnapshot{}, missing);
+    return record_frames(name, "laser scans", laser_frames(), LoopSnapshot{}, missing);
 }
 
 TEST(RunLogLaser, EveryScanRoundTripsExactly) {
-    const fs::path path = record("scans.log");
+    const fs::path path = record_laser_log("scans.log");
     const std::string text = read_text(path);
     EXPECT_EQ(text.rfind("legofeup-run-log 3\n", 0), 0U);
     EXPECT_NE(text.find(",beacons,laser_scan\n"), std::string::npos);
     const RunLog log = load_run_log(path);
     EXPECT_EQ(log.header.version, 3);
-    const std::vector<SensorFrame> expected = frames();
+    const std::vector<SensorFrame> expected = laser_frames();
     ASSERT_EQ(log.records.size(), expected.size() + 1);
     for (std::size_t i = 0; i < expected.size(); ++i) {
         SCOPED_TRACE(i);
@@ -110,7 +110,7 @@ TEST(RunLogLaser, EveryScanRoundTripsExactly) {
 }
 
 TEST(RunLogLaser, TheCellIsTheCountThenEachRangeInMillimetres) {
-    const std::vector<std::string> lines = lines_of(read_text(record("cells.log")));
+    const std::vector<std::string> lines = lines_of(read_text(record_laser_log("cells.log")));
     const std::size_t first = static_cast<std::size_t>(first_record_line(lines));
     const auto last_cell = [&](std::size_t record) {
         const std::vector<std::string> cells = cells_of(lines[first + record]);
@@ -128,7 +128,7 @@ TEST(RunLogLaser, TheCellIsTheCountThenEachRangeInMillimetres) {
 }
 
 TEST(RunLogLaser, AVersionTwoLogStillLoadsAsFramesWithoutScans) {
-    std::vector<std::string> lines = lines_of(read_text(record("v3.log")));
+    std::vector<std::string> lines = lines_of(read_text(record_laser_log("v3.log")));
     lines[0] = "legofeup-run-log 2";
     const std::size_t first = static_cast<std::size_t>(first_record_line(lines));
     std::string& columns = lines[first - 1];
@@ -153,7 +153,7 @@ TEST(RunLogLaser, AVersionTwoLogStillLoadsAsFramesWithoutScans) {
     EXPECT_TRUE(log.records[4].frame.has_compass);  // version 2's sensors are still read
 
     // A version-2 log with version 3's cells is refused: the count is the version's.
-    std::vector<std::string> mixed = lines_of(read_text(record("mixed.log")));
+    std::vector<std::string> mixed = lines_of(read_text(record_laser_log("mixed.log")));
     mixed[0] = "legofeup-run-log 2";
     write_text(path, joined(mixed));
     EXPECT_NE(
@@ -163,7 +163,7 @@ TEST(RunLogLaser, AVersionTwoLogStillLoadsAsFramesWithoutScans) {
 }
 
 TEST(RunLogLaser, MalformedScanCellsAreReportedAtFileLineWithTheColumn) {
-    const std::vector<std::string> lines = lines_of(read_text(record("good.log")));
+    const std::vector<std::string> lines = lines_of(read_text(record_laser_log("good.log")));
     const int first = first_record_line(lines);
     const fs::path path = temp_file("bad.log");
     auto message_with = [&](const std::string& value, int record = 4) {

@@ -27,7 +27,7 @@ namespace {
 
 using namespace run_log_testing;
 
-SensorFrame base_frame(std::uint32_t sequence) {
+SensorFrame optional_sensor_base_frame(std::uint32_t sequence) {
     SensorFrame frame;
     frame.time = 0.05 * sequence;
     frame.sequence = sequence;
@@ -39,9 +39,9 @@ SensorFrame base_frame(std::uint32_t sequence) {
 
 /// The frames recorded: every optional sensor at its extremes with eight sightings whose
 /// bearings need all 17 digits; none; an empty scan with a compass; a gyro and one sighting.
-std::vector<SensorFrame> frames() {
+std::vector<SensorFrame> optional_sensor_frames() {
     std::vector<SensorFrame> out;
-    SensorFrame full = base_frame(1);
+    SensorFrame full = optional_sensor_base_frame(1);
     full.has_gyro = true;
     full.gyro_raw = std::numeric_limits<std::int16_t>::min();
     full.has_accelerometers = true;
@@ -63,13 +63,13 @@ std::vector<SensorFrame> frames() {
         full.beacons.sightings[k] = {static_cast<std::uint8_t>(k == 7 ? 255 : k), bearings[k]};
     }
     out.push_back(full);
-    out.push_back(base_frame(2));
-    SensorFrame empty_scan = base_frame(3);
+    out.push_back(optional_sensor_base_frame(2));
+    SensorFrame empty_scan = optional_sensor_base_frame(3);
     empty_scan.has_beacon_scan = true;
     empty_scan.has_compass = true;
     empty_scan.compass_deg = 0;
     out.push_back(empty_scan);
-    SensorFrame one = base_frame(4);
+    SensorFrame one = optional_sensor_base_frame(4);
     one.has_gyro = true;
     one.gyro_raw = 612;
     one.has_beacon_scan = true;
@@ -103,19 +103,20 @@ void expect_same_frame(const SensorFrame& actual, const SensorFrame& expected) {
     }
 }
 
-/// Records frames(), then a step without a frame, with an empty configuration block.
-fs::path record(const std::string& name) {
+/// Records optional_sensor_frames(), then a step without a frame, with an empty configuration
+/// block.
+fs::path record_optional_sensor_log(const std::string& name) {
     LoopSnapshot step;
     step.wheels = {0.1, 0.2};
     LoopSnapshot missing;
     missing.time = 0.25;
     missing.frame.time = 0.25;
     missing.frame.has_gyro = true;  // whatever a missing frame holds is not recorded
-    return record_frames(name, "optional sensors", frames(), step, missing);
+    return record_frames(name, "optional sensors", optional_sensor_frames(), step, missing);
 }
 
 TEST(RunLogOptionalSensors, EveryFieldRoundTripsBitForBit) {
-    const fs::path path = record("optional.log");
+    const fs::path path = record_optional_sensor_log("optional.log");
     const std::string text = read_text(path);
     EXPECT_EQ(text.rfind("legofeup-run-log 3\n", 0), 0U);
     EXPECT_NE(text.find(",compass_deg,beacons,laser_scan\n"), std::string::npos);
@@ -123,7 +124,7 @@ TEST(RunLogOptionalSensors, EveryFieldRoundTripsBitForBit) {
     const RunLog log = load_run_log(path);
     EXPECT_EQ(log.header.version, 3);
     ASSERT_EQ(log.records.size(), 5U);
-    const std::vector<SensorFrame> expected = frames();
+    const std::vector<SensorFrame> expected = optional_sensor_frames();
     for (std::size_t i = 0; i < expected.size(); ++i) {
         SCOPED_TRACE(i);
         EXPECT_FALSE(log.records[i].frame_missing);
@@ -134,7 +135,8 @@ TEST(RunLogOptionalSensors, EveryFieldRoundTripsBitForBit) {
 }
 
 TEST(RunLogOptionalSensors, TheCellsAreThoseOfTheDocumentation) {
-    const std::vector<std::string> lines = lines_of(read_text(record("cells.log")));
+    const std::vector<std::string> lines =
+        lines_of(read_text(record_optional_sensor_log("cells.log")));
     const int first = first_record_line(lines);
     // The seven cells of version 2's optional sensors (the last, version 3's laser scan, is
     // empty in these frames).
@@ -156,7 +158,7 @@ TEST(RunLogOptionalSensors, TheCellsAreThoseOfTheDocumentation) {
 }
 
 TEST(RunLogOptionalSensors, AVersionOneLogStillLoadsAsFramesWithoutThem) {
-    std::vector<std::string> lines = lines_of(read_text(record("v2.log")));
+    std::vector<std::string> lines = lines_of(read_text(record_optional_sensor_log("v2.log")));
     lines[0] = "legofeup-run-log 1";
     const int first = first_record_line(lines);
     lines[static_cast<std::size_t>(first - 1)] = std::string("columns: ") +
@@ -176,14 +178,14 @@ TEST(RunLogOptionalSensors, AVersionOneLogStillLoadsAsFramesWithoutThem) {
     EXPECT_EQ(log.header.version, 1);
     EXPECT_TRUE(log.ended);
     ASSERT_EQ(log.records.size(), 5U);
-    const std::vector<SensorFrame> recorded = frames();
+    const std::vector<SensorFrame> recorded = optional_sensor_frames();
     for (std::size_t i = 0; i < recorded.size(); ++i) {
         SCOPED_TRACE(i);
-        expect_same_frame(log.records[i].frame, base_frame(recorded[i].sequence));
+        expect_same_frame(log.records[i].frame, optional_sensor_base_frame(recorded[i].sequence));
     }
 
     // A version-1 log with version 2's cells is refused: the count is the version's.
-    std::vector<std::string> mixed = lines_of(read_text(record("mixed.log")));
+    std::vector<std::string> mixed = lines_of(read_text(record_optional_sensor_log("mixed.log")));
     mixed[0] = "legofeup-run-log 1";
     write_text(path, joined(mixed));
     EXPECT_NE(
@@ -193,7 +195,8 @@ TEST(RunLogOptionalSensors, AVersionOneLogStillLoadsAsFramesWithoutThem) {
 }
 
 TEST(RunLogOptionalSensors, MalformedCellsAreReportedAtFileLineWithTheColumn) {
-    const std::vector<std::string> lines = lines_of(read_text(record("good.log")));
+    const std::vector<std::string> lines =
+        lines_of(read_text(record_optional_sensor_log("good.log")));
     const int first = first_record_line(lines);
     const fs::path path = temp_file("bad.log");
     const int line_number = first + 1;  // the full frame's record, 1-based

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "input_problems_test_support.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/submission.hpp"
 
@@ -27,21 +28,13 @@ q11 = 2e-7
 r22 = 2e-4
 )";
 
-std::vector<InputProblem> problems_of(const std::string& text) {
+std::vector<InputProblem> submission_problems_of(const std::string& text) {
     try {
         parse_submission(text, "sub.toml", legofeup_lesson());
     } catch (const InputError& error) {
         return error.problems();
     }
     return {};
-}
-
-std::string all_messages(const std::vector<InputProblem>& problems) {
-    std::string text;
-    for (const InputProblem& problem : problems) {
-        text += problem.message() + "\n";
-    }
-    return text;
 }
 
 const RunConfig& graded_preset() {
@@ -114,10 +107,10 @@ TEST(Submission, TuningToTomlListsTheTunableSettingsThatChanged) {
 }
 
 TEST(Submission, SettingsOutsideTheTunableListAreRejectedWithTheAllowedList) {
-    const auto problems = problems_of(
+    const auto problems = submission_problems_of(
         "lesson = \"legofeup\"\nstudents = \"A\"\n[tuning.simulator]\nir_noise = 0.0\n"
         "[tuning]\nlaps = 1\n");
-    ASSERT_EQ(problems.size(), 2u) << all_messages(problems);
+    ASSERT_EQ(problems.size(), 2u) << testing::all_messages(problems);
     EXPECT_EQ(problems[0].message(),
               "sub.toml:4: tuning.simulator.ir_noise = 0.0: lesson \"legofeup\" lets students "
               "tune only: filter, initial");
@@ -126,7 +119,7 @@ TEST(Submission, SettingsOutsideTheTunableListAreRejectedWithTheAllowedList) {
 }
 
 TEST(Submission, BadAnswersAndValuesAreProblemsAtTheirLines) {
-    const auto problems = problems_of(R"(lesson = "legofeup"
+    const auto problems = submission_problems_of(R"(lesson = "legofeup"
 students = "A"
 colour = "blue"
 [answers.g]
@@ -138,7 +131,7 @@ q1 = 3
 q11 = -1.0
 q1 = 2
 )");
-    ASSERT_EQ(problems.size(), 5u) << all_messages(problems);
+    ASSERT_EQ(problems.size(), 5u) << testing::all_messages(problems);
     EXPECT_EQ(problems[0].line, 3);
     EXPECT_EQ(problems[0].key, "colour");
     EXPECT_EQ(problems[1].line, 4);
@@ -149,23 +142,23 @@ q1 = 2
     EXPECT_EQ(problems[4].line, 11);
     EXPECT_NE(problems[4].reason.find("did you mean 'filter.q11'"), std::string::npos);
     // Once the keys are right, the values are checked as a run would check them.
-    const auto range =
-        problems_of("lesson = \"legofeup\"\nstudents = \"A\"\n[tuning.filter]\nq11 = -1.0\n");
-    ASSERT_EQ(range.size(), 1u) << all_messages(range);
+    const auto range = submission_problems_of(
+        "lesson = \"legofeup\"\nstudents = \"A\"\n[tuning.filter]\nq11 = -1.0\n");
+    ASSERT_EQ(range.size(), 1u) << testing::all_messages(range);
     EXPECT_EQ(range[0].line, 4);
     EXPECT_EQ(range[0].key, "filter.q11");
 }
 
 TEST(Submission, AnotherLessonOrMissingNamesAreProblems) {
-    const auto other = problems_of("lesson = \"kalman-101\"\nstudents = \"A\"\n");
+    const auto other = submission_problems_of("lesson = \"kalman-101\"\nstudents = \"A\"\n");
     ASSERT_EQ(other.size(), 1u);
     EXPECT_EQ(other[0].message(),
               "sub.toml:1: lesson = \"kalman-101\": this submission is for another lesson "
               "(expected \"legofeup\")");
-    const auto nobody = problems_of("lesson = \"legofeup\"\n");
+    const auto nobody = submission_problems_of("lesson = \"legofeup\"\n");
     ASSERT_EQ(nobody.size(), 1u);
     EXPECT_EQ(nobody[0].key, "students");
-    const auto syntax = problems_of("lesson = \"legofeup\"\nstudents = \n");
+    const auto syntax = submission_problems_of("lesson = \"legofeup\"\nstudents = \n");
     ASSERT_EQ(syntax.size(), 1u);
     EXPECT_EQ(syntax[0].line, 2);
 }

@@ -9,9 +9,13 @@
 
 #include "legofeup/core/angles.hpp"
 #include "legofeup/sim/simulator.hpp"
+#include "world_test_support.hpp"
 
 namespace legofeup::sim {
 namespace {
+
+// Where the robot stands on the open floor before it is displaced.
+const Pose2 kFloorStart{0.2, -0.3, 0.4};
 
 SimulatorSettings kidnapping(double time) {
     SimulatorSettings settings;
@@ -19,14 +23,8 @@ SimulatorSettings kidnapping(double time) {
     return settings;
 }
 
-WorldSpec open_floor() {
-    WorldSpec world;
-    world.start = {0.2, -0.3, 0.4};
-    return world;
-}
-
 TEST(Displacement, MovesTheRobotOnceInTheFirstPeriodEndingAtItsTime) {
-    Simulator simulator(open_floor(), RobotSpec{}, kidnapping(0.97), 1);
+    Simulator simulator(test::open_floor(kFloorStart), RobotSpec{}, kidnapping(0.97), 1);
     for (int i = 0; i < 19; ++i) {  // to 0.95 s: not yet
         simulator.step_control_period();
     }
@@ -54,7 +52,7 @@ TEST(Displacement, MovesTheRobotOnceInTheFirstPeriodEndingAtItsTime) {
 
 TEST(Displacement, TheEncodersOnlyCountTheWheelsWhileMoving) {
     const auto run = [](const SimulatorSettings& settings) {
-        Simulator simulator(open_floor(), RobotSpec{}, settings, 1);
+        Simulator simulator(test::open_floor(kFloorStart), RobotSpec{}, settings, 1);
         simulator.set_wheel_command({0.1, 0.1});
         for (int i = 0; i < 60; ++i) {
             simulator.step_control_period();
@@ -91,7 +89,7 @@ SimulatorSettings kidnap_at(double time, const Pose2& pose) {
 
 TEST(Kidnap, PutsTheRobotAtItsPoseOnceInTheFirstPeriodEndingAtItsTime) {
     const Pose2 place{-0.7, 0.9, 2.0};
-    Simulator simulator(open_floor(), RobotSpec{}, kidnap_at(0.97, place), 1);
+    Simulator simulator(test::open_floor(kFloorStart), RobotSpec{}, kidnap_at(0.97, place), 1);
     for (int i = 0; i < 19; ++i) {  // to 0.95 s: not yet
         simulator.step_control_period();
     }
@@ -128,7 +126,7 @@ TEST(Kidnap, PutsTheRobotAtItsPoseOnceInTheFirstPeriodEndingAtItsTime) {
 TEST(Kidnap, AfterADisplacementInTheSamePeriodTheAbsolutePoseWins) {
     SimulatorSettings settings = kidnap_at(0.5, {1.0, 1.0, 0.0});
     settings.displacement = {true, 0.5, 0.3, 0.0, 0.0};
-    Simulator simulator(open_floor(), RobotSpec{}, settings, 1);
+    Simulator simulator(test::open_floor(kFloorStart), RobotSpec{}, settings, 1);
     for (int i = 0; i < 10; ++i) {
         simulator.step_control_period();
     }
@@ -139,7 +137,7 @@ TEST(Kidnap, AfterADisplacementInTheSamePeriodTheAbsolutePoseWins) {
 }
 
 TEST(Kidnap, EveryTeleportIsCountedInTheGroundTruth) {
-    Simulator simulator(open_floor(), RobotSpec{}, {}, 1);
+    Simulator simulator(test::open_floor(kFloorStart), RobotSpec{}, {}, 1);
     EXPECT_EQ(simulator.ground_truth().teleports, 0U);
     simulator.teleport({0.5, 0.5, 0.0});
     simulator.step_control_period();
@@ -159,7 +157,8 @@ TEST(Kidnap, IsValidated) {
     settings.kidnap = {true, 1.0, {0.0, 0.0, std::numeric_limits<double>::infinity()}};
     ASSERT_EQ(validate(settings).size(), 1U);
     EXPECT_EQ(validate(settings)[0].field, "simulator.kidnap.pose.theta");
-    EXPECT_THROW(Simulator(open_floor(), RobotSpec{}, settings, 1), std::invalid_argument);
+    EXPECT_THROW(Simulator(test::open_floor(kFloorStart), RobotSpec{}, settings, 1),
+                 std::invalid_argument);
 }
 
 }  // namespace

@@ -12,16 +12,10 @@
 #include "legofeup/core/angles.hpp"
 #include "legofeup/core/odometry.hpp"
 #include "legofeup/sim/simulator.hpp"
+#include "world_test_support.hpp"
 
 namespace legofeup::sim {
 namespace {
-
-WorldSpec open_floor() {
-    WorldSpec world;
-    world.name = "open floor";
-    world.start = {0.0, 0.0, 0.0};
-    return world;
-}
 
 RobotSpec robot_counting(double counts_per_turn) {
     RobotSpec robot;
@@ -49,7 +43,7 @@ class CountsPerTurn : public ::testing::TestWithParam<double> {};
 TEST_P(CountsPerTurn, TenWheelTurnsGiveTenTimesCountsPerTurn) {
     const double counts_per_turn = GetParam();
     const RobotSpec robot = robot_counting(counts_per_turn);
-    Simulator simulator(open_floor(), robot, {}, 1);
+    Simulator simulator(test::open_floor(), robot, {}, 1);
     const double one_turn_per_second = kPi * robot.wheel_diameter;  // m/s
     simulator.set_wheel_command({one_turn_per_second, -one_turn_per_second});
     const int periods_per_second =
@@ -71,8 +65,8 @@ INSTANTIATE_TEST_SUITE_P(Resolutions, CountsPerTurn, ::testing::Values(180.0, 36
 TEST(EncoderResolution, CountsAreTheFloorOfTurnsTimesCountsPerTurnAtEveryFrame) {
     std::vector<std::unique_ptr<Simulator>> robots;  // 360, 720 and 180 counts a turn
     for (const double counts_per_turn : {360.0, 720.0, 180.0}) {
-        robots.push_back(std::make_unique<Simulator>(open_floor(), robot_counting(counts_per_turn),
-                                                     SimulatorSettings{}, 1));
+        robots.push_back(std::make_unique<Simulator>(
+            test::open_floor(), robot_counting(counts_per_turn), SimulatorSettings{}, 1));
     }
     // A curve forwards, then backwards far enough that both wheels' counts go negative.
     const std::vector<std::pair<WheelSpeeds, int>> legs = {{{0.12, 0.05}, 40},
@@ -113,7 +107,7 @@ TEST(EncoderResolution, CountersWrapAtThirtyTwoBitsAndTheirDifferencesStayTrue) 
     RobotSpec robot = robot_counting(1e6);
     robot.max_motor_rpm = 10000.0;
     robot.motor_time_constant = 0.0;  // at full speed from the first step
-    Simulator simulator(open_floor(), robot, {}, 1);
+    Simulator simulator(test::open_floor(), robot, {}, 1);
     simulator.set_wheel_command({100.0, 100.0});  // clipped at 10000 rpm
     const double per_period =
         robot.max_motor_rpm / 60.0 * simulator.settings().control_period * robot.counts_per_turn;

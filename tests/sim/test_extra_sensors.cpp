@@ -9,34 +9,10 @@
 
 #include "legofeup/core/angles.hpp"
 #include "legofeup/sim/simulator.hpp"
+#include "world_test_support.hpp"
 
 namespace legofeup::sim {
 namespace {
-
-WorldSpec open_floor(const Pose2& start = {0.0, 0.0, 0.0}) {
-    WorldSpec world;
-    world.name = "open floor";
-    world.start = start;
-    return world;
-}
-
-struct Stats {
-    double mean = 0.0;
-    double sd = 0.0;
-};
-
-Stats stats_of(const std::vector<double>& values) {
-    const auto n = static_cast<double>(values.size());
-    Stats s;
-    for (double v : values) {
-        s.mean += v / n;
-    }
-    for (double v : values) {
-        s.sd += (v - s.mean) * (v - s.mean) / (n - 1.0);
-    }
-    s.sd = std::sqrt(s.sd);
-    return s;
-}
 
 RobotSpec with_all_sensors() {
     RobotSpec robot;
@@ -50,7 +26,7 @@ RobotSpec with_all_sensors() {
 // ---- beacon scanner ----
 
 TEST(BeaconScanner, DetectsEachBeaconWithTheConfiguredProbability) {
-    WorldSpec world = open_floor();
+    WorldSpec world = test::open_floor();
     world.beacons = {{1, {2.0, 0.0}}, {2, {0.0, 2.0}}, {3, {-2.0, 0.0}}, {4, {0.0, -2.0}}};
     for (const double p : {0.5, 0.15}) {
         RobotSpec robot;
@@ -76,7 +52,7 @@ TEST(BeaconScanner, DetectsEachBeaconWithTheConfiguredProbability) {
 }
 
 TEST(BeaconScanner, BearingIsUnbiasedWithTheConfiguredSpreadAndOrderedById) {
-    WorldSpec world = open_floor({0.0, 0.0, 0.3});
+    WorldSpec world = test::open_floor({0.0, 0.0, 0.3});
     // Listed out of order: the scanner reports in id order.
     world.beacons = {{9, {-1.0, -1.0}}, {2, {1.0, 0.5}}, {4, {-0.5, 2.0}}};
     RobotSpec robot;
@@ -103,14 +79,14 @@ TEST(BeaconScanner, BearingIsUnbiasedWithTheConfiguredSpreadAndOrderedById) {
     }
     const double sigma = std::sqrt(kPi / 8.0);  // the paper's variance π/8
     for (const auto& errors : {errors_2, errors_9}) {
-        const Stats s = stats_of(errors);
+        const test::SampleStats s = test::sample_stats_of(errors);
         EXPECT_NEAR(s.mean, 0.0, 4.0 * sigma / std::sqrt(3000.0));
         EXPECT_NEAR(s.sd, sigma, 0.06 * sigma);  // SE of σ̂ ≈ 1.3 %
     }
 }
 
 TEST(BeaconScanner, ABeaconBehindAWallIsNeverSeen) {
-    WorldSpec world = open_floor();
+    WorldSpec world = test::open_floor();
     world.walls.push_back({"inner", {1.0, -0.5}, {1.0, 0.5}});
     world.beacons = {{1, {2.0, 0.0}}, {2, {-2.0, 0.0}}, {3, {2.0, 2.0}}};  // 1 hidden
     RobotSpec robot;
@@ -127,7 +103,7 @@ TEST(BeaconScanner, ABeaconBehindAWallIsNeverSeen) {
 }
 
 TEST(BeaconScanner, ScansAtItsOwnPeriodAndReportsOnlyFreshScans) {
-    WorldSpec world = open_floor();
+    WorldSpec world = test::open_floor();
     world.beacons = {{1, {1.0, 0.0}}};
     RobotSpec robot;
     robot.beacon_scanner.enabled = true;
@@ -157,7 +133,7 @@ TEST(Gyroscope, AtRestAveragesOffsetPlusBias) {
     robot.gyro.bias_sigma = 3.0;
     robot.gyro.bias_drift = 0.0;
     for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-        Simulator simulator(open_floor(), robot, {}, seed);
+        Simulator simulator(test::open_floor(), robot, {}, seed);
         const double bias = radians_to_degrees(simulator.ground_truth().gyro_bias_rate);
         std::vector<double> raw;
         for (int i = 0; i < 400; ++i) {
@@ -165,7 +141,7 @@ TEST(Gyroscope, AtRestAveragesOffsetPlusBias) {
             ASSERT_TRUE(simulator.sensor_frame().has_gyro);
             raw.push_back(simulator.sensor_frame().gyro_raw);
         }
-        const Stats s = stats_of(raw);
+        const test::SampleStats s = test::sample_stats_of(raw);
         // σ = 1 count noise + rounding; 400 samples: SE ≈ 0.05.
         EXPECT_NEAR(s.mean, 600.0 + bias, 0.25) << "seed " << seed;
         EXPECT_NEAR(s.sd, std::sqrt(1.0 + 1.0 / 12.0), 0.15);
@@ -173,10 +149,10 @@ TEST(Gyroscope, AtRestAveragesOffsetPlusBias) {
     // The bias is drawn per run from N(0, 3²); 300 runs: SE of σ̂ ≈ 4 %.
     std::vector<double> biases;
     for (std::uint64_t seed = 1; seed <= 300; ++seed) {
-        const Simulator simulator(open_floor(), robot, {}, seed);
+        const Simulator simulator(test::open_floor(), robot, {}, seed);
         biases.push_back(radians_to_degrees(simulator.ground_truth().gyro_bias_rate));
     }
-    const Stats s = stats_of(biases);
+    const test::SampleStats s = test::sample_stats_of(biases);
     EXPECT_NEAR(s.sd, 3.0, 0.4);
     EXPECT_NEAR(s.mean, 0.0, 4.0 * 3.0 / std::sqrt(300.0));
 }
@@ -187,7 +163,7 @@ TEST(Gyroscope, ReadsTheTurnRateCounterClockwisePositiveAndSaturates) {
     robot.gyro.noise = 0.0;
     robot.gyro.bias_sigma = 0.0;
     robot.gyro.bias_drift = 0.0;
-    Simulator simulator(open_floor(), robot, {}, 1);
+    Simulator simulator(test::open_floor(), robot, {}, 1);
     simulator.set_wheel_command({0.1, -0.1});  // right wheel forward: counter-clockwise
     for (int i = 0; i < 40; ++i) {
         simulator.step_control_period();
@@ -213,7 +189,7 @@ TEST(Gyroscope, BiasDriftsAsARandomWalk) {
     robot.gyro.bias_drift = 2.0;  // counts/√s
     std::vector<double> changes;
     for (std::uint64_t seed = 1; seed <= 200; ++seed) {
-        Simulator simulator(open_floor(), robot, {}, seed);
+        Simulator simulator(test::open_floor(), robot, {}, seed);
         const double start = simulator.ground_truth().gyro_bias_rate;
         for (int i = 0; i < 5; ++i) {  // 0.25 s
             simulator.step_control_period();
@@ -221,7 +197,7 @@ TEST(Gyroscope, BiasDriftsAsARandomWalk) {
         changes.push_back(radians_to_degrees(simulator.ground_truth().gyro_bias_rate - start));
     }
     // Var(Δb) = σ_rw²·T = 4·0.25 = 1 count²; 200 runs: SE of σ̂ ≈ 5 %.
-    const Stats s = stats_of(changes);
+    const test::SampleStats s = test::sample_stats_of(changes);
     EXPECT_NEAR(s.sd, 1.0, 0.2);
     EXPECT_NEAR(s.mean, 0.0, 4.0 / std::sqrt(200.0));
 }
@@ -244,7 +220,7 @@ double counts(const AccelerometerSpec& spec, double acceleration) {
 TEST(Accelerometers, ReadZeroAtRestAndNoiseWithItsSigma) {
     RobotSpec robot;
     robot.accelerometers = exact_accelerometers();
-    Simulator exact(open_floor(), robot, {}, 1);
+    Simulator exact(test::open_floor(), robot, {}, 1);
     for (int i = 0; i < 20; ++i) {
         exact.step_control_period();
         const SensorFrame frame = exact.sensor_frame();
@@ -257,13 +233,13 @@ TEST(Accelerometers, ReadZeroAtRestAndNoiseWithItsSigma) {
     robot.accelerometers = AccelerometerSpec{};
     robot.accelerometers.enabled = true;
     robot.accelerometers.bias_sigma = 0.0;
-    Simulator noisy(open_floor(), robot, {}, 1);
+    Simulator noisy(test::open_floor(), robot, {}, 1);
     std::vector<double> values;
     for (int i = 0; i < 2000; ++i) {
         noisy.step_control_period();
         values.push_back(noisy.sensor_frame().accel_raw[kAccelLeftWheel][kAccelForward]);
     }
-    const Stats s = stats_of(values);
+    const test::SampleStats s = test::sample_stats_of(values);
     EXPECT_NEAR(s.mean, 0.0, 0.2);
     EXPECT_NEAR(s.sd, std::sqrt(4.0 + 1.0 / 12.0), 0.15);  // σ = 2 counts and rounding
 }
@@ -272,7 +248,7 @@ TEST(Accelerometers, ReadTheForwardAccelerationWhileSpeedingUpStraight) {
     RobotSpec robot;
     robot.accelerometers = exact_accelerometers();
     robot.motor_time_constant = 0.5;  // v̇ = V/τ·e^(−t/τ): 0.6 m/s² at the start
-    Simulator simulator(open_floor(), robot, {}, 1);
+    Simulator simulator(test::open_floor(), robot, {}, 1);
     simulator.set_wheel_command({0.3, 0.3});
     double previous_speed = 0.0;
     for (int i = 0; i < 30; ++i) {
@@ -294,7 +270,7 @@ TEST(Accelerometers, ReadTheForwardAccelerationWhileSpeedingUpStraight) {
 TEST(Accelerometers, SeeCentripetalForceOnACircleAndAngularAccelerationOnASpin) {
     RobotSpec robot;
     robot.accelerometers = exact_accelerometers();
-    Simulator simulator(open_floor(), robot, {}, 1);
+    Simulator simulator(test::open_floor(), robot, {}, 1);
     simulator.set_wheel_command({0.2, 0.1});  // a left turn
     for (int i = 0; i < 60; ++i) {
         simulator.step_control_period();
@@ -315,7 +291,7 @@ TEST(Accelerometers, SeeCentripetalForceOnACircleAndAngularAccelerationOnASpin) 
     // Spinning up on the spot (counter-clockwise): a_forward = v̇ − α·y at lateral offset y,
     // y = −b/2 on the right wheel, +b/2 on the left: +α·b/2 right, −α·b/2 left.
     robot.motor_time_constant = 0.5;
-    Simulator spin(open_floor(), robot, {}, 1);
+    Simulator spin(test::open_floor(), robot, {}, 1);
     spin.set_wheel_command({0.1, -0.1});
     double previous_rate = 0.0;
     for (int i = 0; i < 10; ++i) {
@@ -367,7 +343,7 @@ TEST(Compass, ErrorIsTheDisturbanceFieldPlusNoiseInWholeDegrees) {
         ASSERT_LE(std::abs(residual), 0.5 + 1e-6);  // only the 1° quantisation
     }
     robot.compass.noise_deg = 2.0;
-    const Stats s = stats_of(run(robot, 1));
+    const test::SampleStats s = test::sample_stats_of(run(robot, 1));
     EXPECT_NEAR(s.mean, 0.0, 0.2);
     EXPECT_NEAR(s.sd, std::sqrt(4.0 + 1.0 / 12.0), 0.15);
 }
@@ -446,7 +422,7 @@ TEST(ExtraSensors, RefusesInvalidSpecsNamingTheFields) {
               "simulator.beacon_scanner.detection_probability simulator.gyro.noise "
               "simulator.accelerometers.range_g simulator.compass.noise_deg ");
 
-    WorldSpec world = open_floor();
+    WorldSpec world = test::open_floor();
     world.beacons = {{300, {0.0, 0.0}}, {1, {1.0, 0.0}}, {1, {2.0, 0.0}}};
     world.magnetic.wavelength = 0.0;
     fields.clear();

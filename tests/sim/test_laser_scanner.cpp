@@ -16,6 +16,7 @@
 #include "legofeup/core/laser_scan.hpp"
 #include "legofeup/sim/simulator.hpp"
 #include "map_test_support.hpp"
+#include "world_test_support.hpp"
 
 namespace legofeup::sim {
 namespace {
@@ -169,26 +170,6 @@ TEST(LaserScanner, TheReadingModelWorkedByHand) {
 
 // ---- noise ----
 
-struct Stats {
-    double mean = 0.0;
-    double sd = 0.0;
-    std::size_t n = 0;
-};
-
-Stats stats_of(const std::vector<double>& values) {
-    Stats s;
-    s.n = values.size();
-    const auto n = static_cast<double>(values.size());
-    for (double v : values) {
-        s.mean += v / n;
-    }
-    for (double v : values) {
-        s.sd += (v - s.mean) * (v - s.mean) / (n - 1.0);
-    }
-    s.sd = std::sqrt(s.sd);
-    return s;
-}
-
 TEST(LaserScanner, RangeNoiseIsUnbiasedWithSigmaNearAndOnePercentFar) {
     const Room room{};
     // σ_near = 15 mm, distinct from 1 % of any near distance, so a swapped regime shows.
@@ -214,7 +195,7 @@ TEST(LaserScanner, RangeNoiseIsUnbiasedWithSigmaNearAndOnePercentFar) {
         simulator.step_control_period();
     }
     for (const auto& [name, errors] : {std::pair{"near", near}, std::pair{"far", far}}) {
-        const Stats s = stats_of(errors);
+        const test::SampleStats s = test::sample_stats_of(errors);
         SCOPED_TRACE(testing::Message()
                      << name << ": " << s.n << " readings, mean " << s.mean << ", sd " << s.sd);
         ASSERT_GT(s.n, 10000U);

@@ -8,6 +8,7 @@
 #include "legofeup/core/angles.hpp"
 #include "legofeup/sim/lockstep_link.hpp"
 #include "legofeup/sim/simulator.hpp"
+#include "world_test_support.hpp"
 
 namespace legofeup::sim {
 namespace {
@@ -15,13 +16,6 @@ namespace {
 constexpr double kCountsPerMetre = 360.0 / (kPi * 0.0432);
 
 // An empty world, so nothing is in the way.
-WorldSpec open_floor() {
-    WorldSpec world;
-    world.name = "open floor";
-    world.start = {0.0, 0.0, 0.0};
-    return world;
-}
-
 void run_for(Simulator& simulator, double seconds) {
     const auto periods =
         static_cast<int>(std::lround(seconds / simulator.settings().control_period));
@@ -31,7 +25,7 @@ void run_for(Simulator& simulator, double seconds) {
 }
 
 TEST(Simulator, DrivesStraightAndCountsTheWheelRotation) {
-    Simulator simulator(open_floor(), RobotSpec{}, {}, 1);
+    Simulator simulator(test::open_floor(), RobotSpec{}, {}, 1);
     simulator.set_wheel_command({0.1, 0.1});
     run_for(simulator, 10.0);
     const GroundTruth truth = simulator.ground_truth();
@@ -49,7 +43,7 @@ TEST(Simulator, DrivesStraightAndCountsTheWheelRotation) {
 TEST(Simulator, MotorsRespondWithFirstOrderLagAndSaturate) {
     RobotSpec robot;
     robot.motor_time_constant = 0.1;
-    Simulator simulator(open_floor(), robot, {}, 1);
+    Simulator simulator(test::open_floor(), robot, {}, 1);
     simulator.set_wheel_command({0.2, 0.2});
     run_for(simulator, 0.1);  // one time constant: 1 − e⁻¹ of the way
     EXPECT_NEAR(simulator.ground_truth().wheel_surface_speeds.right, 0.2 * (1.0 - std::exp(-1.0)),
@@ -66,7 +60,7 @@ TEST(Simulator, WheelDiameterRatioBendsAStraightCommand) {
     // turns the robot left by about (E_d − 1)·distance / b = 0.0417 rad per metre.
     RobotSpec robot;
     robot.wheel_diameter_ratio = 1.005;
-    Simulator simulator(open_floor(), robot, {}, 1);
+    Simulator simulator(test::open_floor(), robot, {}, 1);
     simulator.set_wheel_command({0.1, 0.1});
     run_for(simulator, 10.0);
     const double travelled = simulator.ground_truth().pose.x;
@@ -84,7 +78,7 @@ TEST(Simulator, WheelBaseRatioShortensTurns) {
     RobotSpec robot;
     robot.wheel_base_ratio = 1.03;
     robot.motor_time_constant = 0.0;  // no lag, so the commanded angle is exact
-    Simulator simulator(open_floor(), robot, {}, 1);
+    Simulator simulator(test::open_floor(), robot, {}, 1);
     const double w = 0.5;
     simulator.set_wheel_command({0.06 * w, -0.06 * w});
     run_for(simulator, kPi / 2.0 / w);
@@ -94,7 +88,7 @@ TEST(Simulator, WheelBaseRatioShortensTurns) {
 }
 
 TEST(Simulator, EncodersKeepCountingWhenTheRobotIsStuckAgainstAWall) {
-    WorldSpec world = open_floor();
+    WorldSpec world = test::open_floor();
     world.walls.push_back({"wall", {0.3, -1.0}, {0.3, 1.0}});
     Simulator simulator(world, RobotSpec{}, {}, 1);
     simulator.set_wheel_command({0.1, 0.1});
@@ -107,7 +101,7 @@ TEST(Simulator, EncodersKeepCountingWhenTheRobotIsStuckAgainstAWall) {
 }
 
 TEST(Simulator, IrSensorsMeasureTheNearestWallOnTheRight) {
-    WorldSpec world = open_floor();
+    WorldSpec world = test::open_floor();
     world.walls.push_back({"near", {-1.0, -0.20}, {1.0, -0.20}});
     world.walls.push_back({"far", {-1.0, -0.40}, {1.0, -0.40}});
     world.walls.push_back({"left", {-1.0, 0.10}, {1.0, 0.10}});  // not seen: wrong side
@@ -122,7 +116,7 @@ TEST(Simulator, IrSensorsMeasureTheNearestWallOnTheRight) {
 }
 
 TEST(Simulator, IrSeesNothingBeyondItsRayAndFoldsBackAtContact) {
-    WorldSpec world = open_floor();
+    WorldSpec world = test::open_floor();
     Simulator empty(world, RobotSpec{}, {}, 1);
     const SharpIrCurve curve;
     EXPECT_EQ(empty.sensor_frame().ir_adc[0],
@@ -136,7 +130,7 @@ TEST(Simulator, IrSeesNothingBeyondItsRayAndFoldsBackAtContact) {
 }
 
 TEST(Simulator, IrValuesAreHeldBetweenUpdatesEvery38Milliseconds) {
-    WorldSpec world = open_floor();
+    WorldSpec world = test::open_floor();
     world.start = {0.0, 0.0, 0.3};  // drive away from the wall at an angle
     world.walls.push_back({"wall", {-2.0, -0.15}, {3.0, -0.15}});
     SimulatorSettings settings;
@@ -162,7 +156,7 @@ TEST(Simulator, IrValuesAreHeldBetweenUpdatesEvery38Milliseconds) {
 }
 
 TEST(Simulator, IrNoiseHasTheConfiguredStandardDeviation) {
-    WorldSpec world = open_floor();
+    WorldSpec world = test::open_floor();
     world.walls.push_back({"wall", {-1.0, -0.21}, {1.0, -0.21}});
     RobotSpec robot;
     robot.ir_noise = 0.01;
@@ -196,7 +190,7 @@ TEST(Simulator, SlipNoiseGrowsWithDistanceTravelled) {
         double sum_squares = 0.0;
         const int seeds = 60;
         for (int seed = 1; seed <= seeds; ++seed) {
-            Simulator simulator(open_floor(), robot, {}, static_cast<std::uint64_t>(seed));
+            Simulator simulator(test::open_floor(), robot, {}, static_cast<std::uint64_t>(seed));
             simulator.set_wheel_command({0.1, 0.1});
             run_for(simulator, seconds);
             const double theta = simulator.ground_truth().pose.theta;
@@ -240,7 +234,7 @@ TEST(Simulator, SameSeedSameFramesDifferentSeedDifferentNoise) {
 }
 
 TEST(Simulator, ResetAndTeleport) {
-    Simulator simulator(open_floor(), RobotSpec{}, {}, 1);
+    Simulator simulator(test::open_floor(), RobotSpec{}, {}, 1);
     simulator.set_wheel_command({0.1, 0.1});
     run_for(simulator, 1.0);
     simulator.teleport({2.0, 3.0, 1.0});
@@ -260,7 +254,7 @@ TEST(Simulator, RefusesInvalidSpecsNamingTheFields) {
     SimulatorSettings settings;
     settings.physics_rate = 30.0;
     try {
-        Simulator simulator(open_floor(), robot, settings, 1);
+        Simulator simulator(test::open_floor(), robot, settings, 1);
         FAIL();
     } catch (const std::invalid_argument& error) {
         const std::string what = error.what();
@@ -274,7 +268,7 @@ TEST(Simulator, RefusesInvalidSpecsNamingTheFields) {
 }
 
 TEST(LockstepLink, FirstFrameIsTheStartThenOnePeriodPerFrame) {
-    Simulator simulator(open_floor(), RobotSpec{}, {}, 1);
+    Simulator simulator(test::open_floor(), RobotSpec{}, {}, 1);
     LockstepLink link(simulator);
     EXPECT_EQ(link.next_frame()->time, 0.0);
     link.send_command({0.1, 0.1});
