@@ -1,0 +1,31 @@
+# How long a clean build takes on the two cores a lab machine or CI has.
+#
+# Measured with the build's own timing (`.ninja_log`), a clean build spends most of its time
+# parsing the same heavy headers again in every file (GoogleTest, Eigen, Qt, toml++,
+# nlohmann-json) and in linking one program per test group. Two switches cut that:
+#
+# LEGOFEUP_UNITY_BUILD (ON in the presets): each target's sources are compiled in batches of
+#   LEGOFEUP_UNITY_BATCH_SIZE files, one translation unit a batch, so the headers are parsed
+#   once a batch. Every source must therefore be safe to share a translation unit with its
+#   neighbours: helpers in an anonymous namespace get names of their own (the compiler
+#   reports a clash as a redefinition), and no file leaves a `using namespace` or a macro for
+#   the next one. Turn it off for quick incremental work on one file:
+#   `cmake --preset dev -DLEGOFEUP_UNITY_BUILD=OFF`.
+# LEGOFEUP_FAST_LINKER (ON): link with gold when the toolchain has it; GNU ld's single-threaded
+#   symbol resolution is the slowest step of linking the debug-info-heavy test programs.
+option(LEGOFEUP_UNITY_BUILD "Compile each target's sources in batches (faster clean builds)" OFF)
+set(LEGOFEUP_UNITY_BATCH_SIZE 8 CACHE STRING "Sources per translation unit in a unity build")
+option(LEGOFEUP_FAST_LINKER "Link with gold when available" ON)
+
+if(LEGOFEUP_UNITY_BUILD)
+    set(CMAKE_UNITY_BUILD ON)
+    set(CMAKE_UNITY_BUILD_BATCH_SIZE ${LEGOFEUP_UNITY_BATCH_SIZE})
+endif()
+
+if(LEGOFEUP_FAST_LINKER AND NOT LEGOFEUP_FUZZ)
+    include(CheckLinkerFlag)
+    check_linker_flag(CXX "-fuse-ld=gold" LEGOFEUP_HAS_GOLD)
+    if(LEGOFEUP_HAS_GOLD)
+        add_link_options(-fuse-ld=gold)
+    endif()
+endif()
