@@ -5,8 +5,8 @@
 #include <limits>
 #include <map>
 
-#include "legofeup/core/angles.hpp"
 #include "legofeup/core/consistency.hpp"
+#include "legofeup/core/pose_error.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
 namespace legofeup::lessons::analysis {
@@ -63,15 +63,12 @@ void StepRecorder::on_step(const LoopSnapshot& snapshot, const GroundTruth& trut
     if (!truth_known(truth)) {
         return;
     }
-    const Pose2& pose = truth.pose;
-    const double dx = pose.x - snapshot.estimate(kX);
-    const double dy = pose.y - snapshot.estimate(kY);
-    const double dtheta = wrap_angle(pose.theta - snapshot.estimate(kTheta));
+    const PoseError error = pose_error(snapshot.estimate, truth.pose);  // x̃ = x̂ − x
     samples_.push_back({
-        normalized_estimation_error(to_state(pose), snapshot.estimate, snapshot.covariance),
+        normalized_estimation_error(error, snapshot.covariance),
         snapshot.update.status == StepStatus::Applied ? snapshot.update.nis : kNan,
-        dx * dx + dy * dy,
-        dtheta * dtheta,
+        error.position() * error.position(),
+        error.theta * error.theta,
     });
 }
 
