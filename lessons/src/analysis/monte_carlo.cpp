@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 #include "legofeup/core/consistency.hpp"
 #include "legofeup/core/pose_error.hpp"
@@ -99,18 +101,24 @@ StepSums& StepSums::operator+=(const StepSums& other) {
 
 RunRecord make_run_record(std::size_t index, std::uint64_t seed, const RunResult& result) {
     const RunMetrics& m = result.metrics;
+    if (!m.truth) {
+        throw std::runtime_error("run " + std::to_string(index) + " (seed " + std::to_string(seed)
+                                 + ") had no ground truth: a Monte Carlo analysis scores its "
+                                   "runs against the simulator's truth");
+    }
+    const TruthMetrics& t = *m.truth;
     return {index,
             seed,
             result.routine_finished,
             m.steps,
             m.updates_applied,
-            m.rms_position_error,
-            m.max_position_error,
-            m.final_position_error,
-            m.rms_heading_error,
-            m.final_heading_error,
-            m.mean_nees,
-            m.nees_inside_fraction,
+            t.rms_position_error,
+            t.max_position_error,
+            t.final_position_error,
+            t.rms_heading_error,
+            t.final_heading_error,
+            t.mean_nees,
+            t.nees_inside_fraction,
             m.mean_nis};
 }
 
