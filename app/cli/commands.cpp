@@ -173,28 +173,40 @@ nlohmann::json link_to_json(const LinkChoice& link, const lessons::UdpRunReport&
 }
 
 void print_summary(const lessons::ResolvedRun& run, const lessons::RunResult& result,
-                   const std::string& title) {
+                   const std::string& title, const std::string& link) {
     const RunMetrics& m = result.metrics;
-    std::printf("LegoFeup %s (seed %llu, %d lap%s)\n", title.c_str(),
-                static_cast<unsigned long long>(run.config.seed), run.config.laps,
-                run.config.laps == 1 ? "" : "s");
+    std::printf("LegoFeup %s on %s (seed %llu, %d lap%s): %llu steps\n", title.c_str(),
+                link.c_str(), static_cast<unsigned long long>(run.config.seed), run.config.laps,
+                run.config.laps == 1 ? "" : "s", static_cast<unsigned long long>(m.steps));
     std::printf("  simulated %.1f s in %.3f s (%.0fx real time)%s\n", m.duration,
                 result.wall_seconds,
                 result.wall_seconds > 0 ? m.duration / result.wall_seconds : 0.0,
                 result.routine_finished ? "" : ", stopped at the time limit");
-    std::printf(
-        "  position error: RMS %.3f m, max %.3f m, final %.3f m (odometry only: final %.3f m)\n",
-        m.rms_position_error, m.max_position_error, m.final_position_error,
-        m.final_odometry_position_error);
-    std::printf("  heading error:  RMS %.2f deg, final %.2f deg\n",
-                radians_to_degrees(m.rms_heading_error), radians_to_degrees(m.final_heading_error));
+    if (const std::optional<TruthMetrics>& t = m.truth) {
+        std::printf(
+            "  position error: RMS %.3f m, max %.3f m, final %.3f m (odometry only: final %.3f "
+            "m)\n",
+            t->rms_position_error, t->max_position_error, t->final_position_error,
+            t->final_odometry_position_error);
+        std::printf("  heading error:  RMS %.2f deg, final %.2f deg\n",
+                    radians_to_degrees(t->rms_heading_error),
+                    radians_to_degrees(t->final_heading_error));
+    } else {
+        std::printf("  position error: — (no ground truth on this link)\n");
+        std::printf("  heading error:  — (no ground truth on this link)\n");
+    }
     std::printf("  wall updates: %llu applied, %llu rejected by the filter, %llu observations\n",
                 static_cast<unsigned long long>(m.updates_applied),
                 static_cast<unsigned long long>(m.updates_rejected),
                 static_cast<unsigned long long>(m.observations));
-    std::printf("  mean NEES %.2f; %.0f%% of steps inside the 95%% bounds [%.3f, %.3f]\n",
-                m.mean_nees, 100.0 * m.nees_inside_fraction, m.nees_bounds.lower,
-                m.nees_bounds.upper);
+    std::printf("  mean NIS %.2f over the applied updates\n", m.mean_nis);
+    if (m.truth) {
+        std::printf("  mean NEES %.2f; %.0f%% of steps inside the 95%% bounds [%.3f, %.3f]\n",
+                    m.truth->mean_nees, 100.0 * m.truth->nees_inside_fraction, m.nees_bounds.lower,
+                    m.nees_bounds.upper);
+    } else {
+        std::printf("  NEES: — (no ground truth on this link; see trace.csv for the estimates)\n");
+    }
     if (result.frames_missing > 0) {
         std::printf("  %llu control period%s ran without a frame (predict only)\n",
                     static_cast<unsigned long long>(result.frames_missing),
@@ -297,15 +309,7 @@ int run_command(const RunOptions& options) {
             return kExitLinkFailed;
         }
         if (!options.quiet) {
-            if (nxt && !nxt->truth_known) {
-                std::printf(
-                    "LegoFeup %s on %s: %llu steps; no ground truth on a real robot, "
-                    "so no errors or NEES (see trace.csv)\n",
-                    title.c_str(), link.describe().c_str(),
-                    static_cast<unsigned long long>(steps.steps));
-            } else {
-                print_summary(run, result, title);
-            }
+            print_summary(run, result, title, link.describe());
             if (nxt) {
                 print_nxt_link(*nxt);
             }

@@ -3,19 +3,21 @@
 #include <Eigen/Cholesky>
 #include <limits>
 
-#include "legofeup/core/pose_state_space.hpp"
-
 namespace legofeup {
 
-double normalized_estimation_error(const StateVector& truth, const StateVector& estimate,
-                                   const StateCovariance& covariance) {
-    const StateVector error = PoseStateSpace::difference(truth, estimate);
+double normalized_estimation_error(const PoseError& error, const StateCovariance& covariance) {
+    const StateVector x_tilde = error.vector();  // x̃ = x̂ − x
     const Eigen::LDLT<StateCovariance> ldlt(covariance);
-    if (!error.allFinite() || !covariance.allFinite() || ldlt.info() != Eigen::Success
+    if (!x_tilde.allFinite() || !covariance.allFinite() || ldlt.info() != Eigen::Success
         || !(ldlt.vectorD().array() > 0.0).all()) {
         return std::numeric_limits<double>::quiet_NaN();
     }
-    return error.dot(ldlt.solve(error));
+    return x_tilde.dot(ldlt.solve(x_tilde));  // x̃ᵀ P⁻¹ x̃, solved, never inverted
+}
+
+double normalized_estimation_error(const StateVector& truth, const StateVector& estimate,
+                                   const StateCovariance& covariance) {
+    return normalized_estimation_error(pose_error(estimate, to_pose(truth)), covariance);
 }
 
 }  // namespace legofeup

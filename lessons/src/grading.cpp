@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/run_summary.hpp"
@@ -92,11 +93,14 @@ nlohmann::json grade_submission(const Lesson& lesson, const Submission& submissi
 
     nlohmann::json per_seed = nlohmann::json::array();
     std::map<std::string, Spread> spreads;  // ordered by name: the JSON is reproducible
+    std::set<std::string> absent;           // null on some seed (no truth): no mean either
     for (std::size_t i = 0; i < runs.size(); ++i) {
         nlohmann::json metrics = deterministic_metrics(results[i]);
         for (const auto& [name, value] : metrics.items()) {
             if (const auto number = as_number(value)) {
                 spreads[name].add(*number);
+            } else if (value.is_null()) {
+                absent.insert(name);
             }
         }
         per_seed.push_back({{"seed", seeds[i]}, {"metrics", std::move(metrics)}});
@@ -107,11 +111,18 @@ nlohmann::json grade_submission(const Lesson& lesson, const Submission& submissi
     nlohmann::json means = nlohmann::json::object();
     nlohmann::json aggregate = nlohmann::json::object();
     for (const auto& [name, spread] : spreads) {
+        if (absent.contains(name)) {
+            continue;  // a mean over the seeds that had it would pass for all seeds'
+        }
         means[name] = spread.mean();
         aggregate[name] = {{"mean", spread.mean()},
                            {"std", spread.standard_deviation()},
                            {"min", spread.min},
                            {"max", spread.max}};
+    }
+    for (const std::string& name : absent) {
+        means[name] = nullptr;  // its checks fail, saying why (evaluate_checks)
+        aggregate[name] = nullptr;
     }
     if (!per_seed.empty()) {
         for (const auto& [name, value] : per_seed.front()["metrics"].items()) {

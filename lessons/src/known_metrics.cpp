@@ -8,8 +8,13 @@
 namespace legofeup::lessons {
 namespace {
 
+// A run with a truth, so the metrics that need one hold a value of their kind, not null.
 const nlohmann::json& sample_metrics() {
-    static const nlohmann::json sample = result_metrics_to_json(RunResult{});
+    static const nlohmann::json sample = [] {
+        RunResult result;
+        result.metrics.truth = TruthMetrics{};
+        return result_metrics_to_json(result);
+    }();
     return sample;
 }
 

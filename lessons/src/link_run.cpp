@@ -19,11 +19,15 @@ double progress_of(const ResolvedRun& run, const LoopSnapshot& snapshot) {
 
 }  // namespace
 
-std::optional<GroundTruth> UnknownTruth::truth_at(double time) {
+GroundTruth unknown_truth(double time) {
     GroundTruth truth;
     truth.time = time;
     truth.pose = {std::nan(""), std::nan(""), std::nan("")};
     return truth;
+}
+
+std::optional<GroundTruth> UnknownTruth::truth_at(double time) {
+    return unknown_truth(time);
 }
 
 bool truth_known(const GroundTruth& truth) {
@@ -86,20 +90,25 @@ RunResult run_with_link(const ResolvedRun& run, RobotLink& link, TruthSource& tr
     RunResult result;
     std::optional<GroundTruth> last_truth;
 
+    // Every step is counted and seen by the observer; only a step with a known truth is
+    // scored against it. A truth that has not arrived yet (UDP) is stood in for by the last
+    // one; before the first, and on a real robot, the step has none.
     const auto record = [&](const LoopSnapshot& snapshot) {
-        std::optional<GroundTruth> truth = truth_source.truth_at(snapshot.time);
+        const std::optional<GroundTruth> truth = truth_source.truth_at(snapshot.time);
         if (truth) {
             last_truth = truth;
-        } else {
+        }
+        if (!truth || !truth_known(*truth)) {
             ++result.steps_without_truth;
         }
-        if (last_truth) {
-            if (truth_known(*last_truth)) {
-                metrics.add(snapshot, *last_truth);
-            }
-            if (observer != nullptr) {
-                observer->on_step(snapshot, *last_truth);
-            }
+        const GroundTruth seen = last_truth ? *last_truth : unknown_truth(snapshot.time);
+        if (truth_known(seen)) {
+            metrics.add(snapshot, seen);
+        } else {
+            metrics.add(snapshot);
+        }
+        if (observer != nullptr) {
+            observer->on_step(snapshot, seen);
         }
         result.routine_finished = snapshot.controller.finished;
         return result.routine_finished || snapshot.time >= run.max_duration;

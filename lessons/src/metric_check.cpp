@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "legofeup/lessons/run_summary.hpp"
 #include "toml_values.hpp"
 
 namespace legofeup::lessons {
@@ -216,11 +217,20 @@ std::optional<std::pair<double, double>> bounds_of(const nlohmann::json& metrics
     return std::pair((*found)[0].get<double>(), (*found)[1].get<double>());
 }
 
+/// Why a metric has no value, after its name: null means the run could not measure it.
+std::string absent_because(const nlohmann::json& metrics, const std::string& name) {
+    const bool null = metrics.is_object() && metrics.contains(name) && metrics[name].is_null();
+    if (null && is_truth_metric(name)) {
+        return " needs the ground truth, which this run did not have (a link without truth)";
+    }
+    return null ? " has no value in this run" : " is not among the run's metrics";
+}
+
 CheckResult evaluate(const MetricCheck& check, const nlohmann::json& metrics) {
     CheckResult result{check, false, std::numeric_limits<double>::quiet_NaN(), {}};
     const auto value = value_of(metrics, check.metric);
     if (!value) {
-        result.message = check.metric + " is not among the run's metrics: failed";
+        result.message = check.metric + absent_because(metrics, check.metric) + ": failed";
         return result;
     }
     result.actual = *value;

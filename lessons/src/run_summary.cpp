@@ -1,5 +1,8 @@
 #include "legofeup/lessons/run_summary.hpp"
 
+#include <algorithm>
+#include <iterator>
+
 #include "legofeup/lessons/config_schema.hpp"
 
 namespace legofeup::lessons {
@@ -37,7 +40,78 @@ double ratio(double a, double b) {
     return b > 0.0 ? a / b : 0.0;
 }
 
+/// A metric of summary.json that needs the ground truth: its name and how it is read.
+struct TruthMetric {
+    const char* name;
+    nlohmann::json (*value)(const TruthMetrics&);
+};
+
+/// A TruthMetrics member as it is written.
+template <auto Member>
+nlohmann::json field(const TruthMetrics& t) {
+    return t.*Member;
+}
+
+/// The ratio of two TruthMetrics members (below 1: the first is better).
+template <auto Numerator, auto Denominator>
+nlohmann::json ratio_of(const TruthMetrics& t) {
+    return ratio(t.*Numerator, t.*Denominator);
+}
+
+// The one list of the metrics that need the truth: null in a run without one.
+constexpr TruthMetric kTruthMetrics[] = {
+    {"rms_position_error_m", field<&TruthMetrics::rms_position_error>},
+    {"max_position_error_m", field<&TruthMetrics::max_position_error>},
+    {"final_position_error_m", field<&TruthMetrics::final_position_error>},
+    {"rms_heading_error_rad", field<&TruthMetrics::rms_heading_error>},
+    {"max_heading_error_rad", field<&TruthMetrics::max_heading_error>},
+    {"final_heading_error_rad", field<&TruthMetrics::final_heading_error>},
+    {"rms_odometry_position_error_m", field<&TruthMetrics::rms_odometry_position_error>},
+    {"final_odometry_position_error_m", field<&TruthMetrics::final_odometry_position_error>},
+    {"mean_nees", field<&TruthMetrics::mean_nees>},
+    {"nees_inside_fraction", field<&TruthMetrics::nees_inside_fraction>},
+    {"rms_odometry_heading_error_rad", field<&TruthMetrics::rms_odometry_heading_error>},
+    {"max_odometry_heading_error_rad", field<&TruthMetrics::max_odometry_heading_error>},
+    {"final_odometry_heading_error_rad", field<&TruthMetrics::final_odometry_heading_error>},
+    {"rms_wheel_speed_error_kf_mps", field<&TruthMetrics::rms_wheel_speed_error_kf>},
+    {"rms_wheel_speed_error_differentiated_mps",
+     field<&TruthMetrics::rms_wheel_speed_error_differentiated>},
+    {"rms_velocity_error_kf_mps", field<&TruthMetrics::rms_velocity_error_kf>},
+    {"rms_velocity_error_encoders_mps", field<&TruthMetrics::rms_velocity_error_encoders>},
+    {"rms_turn_rate_error_kf_radps", field<&TruthMetrics::rms_turn_rate_error_kf>},
+    {"rms_turn_rate_error_encoders_radps", field<&TruthMetrics::rms_turn_rate_error_encoders>},
+    {"rms_compass_heading_error_rad", field<&TruthMetrics::rms_compass_heading_error>},
+    {"final_gyro_heading_error_rad", field<&TruthMetrics::final_gyro_heading_error>},
+    {"shadow_rms_position_error_m", field<&TruthMetrics::shadow_rms_position_error>},
+    {"shadow_final_position_error_m", field<&TruthMetrics::shadow_final_position_error>},
+    {"shadow_rms_heading_error_rad", field<&TruthMetrics::shadow_rms_heading_error>},
+    {"shadow_mean_nees", field<&TruthMetrics::shadow_mean_nees>},
+    {"odometry_end_to_start_m", field<&TruthMetrics::odometry_end_to_start>},
+    {"estimate_end_to_start_m", field<&TruthMetrics::estimate_end_to_start>},
+    {"odometry_to_estimate_final_error_ratio",
+     field<&TruthMetrics::odometry_to_estimate_final_error_ratio>},
+    {"kidnappings", field<&TruthMetrics::kidnappings>},
+    {"time_to_recover_s", field<&TruthMetrics::time_to_recover>},
+    {"kidnap_recovered", field<&TruthMetrics::kidnap_recovered>},
+    // Ratios for the lessons' comparisons.
+    {"wheel_speed_error_ratio", ratio_of<&TruthMetrics::rms_wheel_speed_error_kf,
+                                         &TruthMetrics::rms_wheel_speed_error_differentiated>},
+    {"velocity_error_ratio",
+     ratio_of<&TruthMetrics::rms_velocity_error_kf, &TruthMetrics::rms_velocity_error_encoders>},
+    {"turn_rate_error_ratio",
+     ratio_of<&TruthMetrics::rms_turn_rate_error_kf, &TruthMetrics::rms_turn_rate_error_encoders>},
+    {"heading_error_to_odometry_ratio",
+     ratio_of<&TruthMetrics::rms_heading_error, &TruthMetrics::rms_odometry_heading_error>},
+    {"shadow_position_error_ratio",
+     ratio_of<&TruthMetrics::shadow_rms_position_error, &TruthMetrics::rms_position_error>},
+};
+
 }  // namespace
+
+bool is_truth_metric(std::string_view name) {
+    return std::any_of(std::begin(kTruthMetrics), std::end(kTruthMetrics),
+                       [&](const TruthMetric& metric) { return metric.name == name; });
+}
 
 nlohmann::json metrics_to_json(const RunMetrics& m) {
     nlohmann::json association = nlohmann::json::object();
@@ -45,17 +119,9 @@ nlohmann::json metrics_to_json(const RunMetrics& m) {
         association[to_string(static_cast<AssociationOutcome>(i))] =
             m.association_outcomes[static_cast<std::size_t>(i)];
     }
-    return {
+    nlohmann::json json = {
         {"steps", m.steps},
         {"simulated_time_s", m.duration},
-        {"rms_position_error_m", m.rms_position_error},
-        {"max_position_error_m", m.max_position_error},
-        {"final_position_error_m", m.final_position_error},
-        {"rms_heading_error_rad", m.rms_heading_error},
-        {"max_heading_error_rad", m.max_heading_error},
-        {"final_heading_error_rad", m.final_heading_error},
-        {"rms_odometry_position_error_m", m.rms_odometry_position_error},
-        {"final_odometry_position_error_m", m.final_odometry_position_error},
         {"observations", m.observations},
         {"association", association},
         {"updates_applied", m.updates_applied},
@@ -63,48 +129,21 @@ nlohmann::json metrics_to_json(const RunMetrics& m) {
         {"mean_update_position_step_m", m.mean_update_position_step},
         {"mean_update_heading_step_rad", m.mean_update_heading_step},
         {"rms_estimate_to_odometry_m", m.rms_estimate_to_odometry},
-        {"mean_nees", m.mean_nees},
         {"nees_95_bounds", {m.nees_bounds.lower, m.nees_bounds.upper}},
-        {"nees_inside_fraction", m.nees_inside_fraction},
         {"mean_nis", m.mean_nis},
-        {"rms_odometry_heading_error_rad", m.rms_odometry_heading_error},
-        {"max_odometry_heading_error_rad", m.max_odometry_heading_error},
-        {"final_odometry_heading_error_rad", m.final_odometry_heading_error},
         {"beacon_bearings", m.beacon_bearings},
         {"beacon_updates_applied", m.beacon_updates_applied},
         {"mean_beacon_nis", m.mean_beacon_nis},
-        {"rms_wheel_speed_error_kf_mps", m.rms_wheel_speed_error_kf},
-        {"rms_wheel_speed_error_differentiated_mps", m.rms_wheel_speed_error_differentiated},
-        {"rms_velocity_error_kf_mps", m.rms_velocity_error_kf},
-        {"rms_velocity_error_encoders_mps", m.rms_velocity_error_encoders},
-        {"rms_turn_rate_error_kf_radps", m.rms_turn_rate_error_kf},
-        {"rms_turn_rate_error_encoders_radps", m.rms_turn_rate_error_encoders},
-        {"rms_compass_heading_error_rad", m.rms_compass_heading_error},
-        {"final_gyro_heading_error_rad", m.final_gyro_heading_error},
-        {"shadow_rms_position_error_m", m.shadow_rms_position_error},
-        {"shadow_final_position_error_m", m.shadow_final_position_error},
-        {"shadow_rms_heading_error_rad", m.shadow_rms_heading_error},
-        {"shadow_mean_nees", m.shadow_mean_nees},
         {"laser_scans", m.laser_scans},
         {"laser_matches", m.laser_matches},
         {"laser_skipped_scans", m.laser_skipped_scans},
         {"laser_recoveries", m.laser_recoveries},
         {"laser_match_fraction", m.laser_match_fraction},
-        {"odometry_end_to_start_m", m.odometry_end_to_start},
-        {"estimate_end_to_start_m", m.estimate_end_to_start},
-        {"odometry_to_estimate_final_error_ratio", m.odometry_to_estimate_final_error_ratio},
-        {"kidnappings", m.kidnappings},
-        {"time_to_recover_s", m.time_to_recover},
-        {"kidnap_recovered", m.kidnap_recovered},
-        // Ratios for the lessons' comparisons (below 1: the first is better).
-        {"wheel_speed_error_ratio",
-         ratio(m.rms_wheel_speed_error_kf, m.rms_wheel_speed_error_differentiated)},
-        {"velocity_error_ratio", ratio(m.rms_velocity_error_kf, m.rms_velocity_error_encoders)},
-        {"turn_rate_error_ratio", ratio(m.rms_turn_rate_error_kf, m.rms_turn_rate_error_encoders)},
-        {"heading_error_to_odometry_ratio",
-         ratio(m.rms_heading_error, m.rms_odometry_heading_error)},
-        {"shadow_position_error_ratio", ratio(m.shadow_rms_position_error, m.rms_position_error)},
     };
+    for (const TruthMetric& metric : kTruthMetrics) {
+        json[metric.name] = m.truth ? metric.value(*m.truth) : nlohmann::json(nullptr);
+    }
+    return json;
 }
 
 nlohmann::json result_metrics_to_json(const RunResult& result) {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "legofeup/core/angles.hpp"
+#include "legofeup/core/pose_error.hpp"
 
 namespace legofeup::report {
 namespace {
@@ -62,7 +62,8 @@ Figure trajectory(const lessons::RefilterResult& result, const sim::WorldSpec& w
     return figure;
 }
 
-// One estimate's error in component `index` (true − estimate, θ wrapped) and its ±σ band.
+// One estimate's error in component `index` (x̃ = x̂ − x, θ wrapped: pose_error.hpp) and its
+// ±σ band.
 struct ErrorSeries {
     std::vector<double> error;
     std::vector<double> minus_sigma;
@@ -76,9 +77,7 @@ ErrorSeries error_series(const std::vector<RefilterStep>& steps, int index, bool
         const StateCovariance& covariance = recorded ? step.old_covariance : step.new_covariance;
         double error = kNone;
         if (step.truth) {
-            const double truth[] = {step.truth->x, step.truth->y, step.truth->theta};
-            error = truth[index] - estimate(index);
-            error = index == kTheta ? wrap_angle(error) : error;
+            error = pose_error(estimate, *step.truth).vector()(index);
         }
         const double sigma = std::sqrt(std::max(0.0, covariance(index, index)));
         series.error.push_back(error);
@@ -99,7 +98,7 @@ Figure errors(const lessons::RefilterResult& result, const std::string& title, i
     for (const int index : {kX, kY, kTheta}) {
         const std::string name = kNames[index];
         plot::Panel& p = figure.panel(index);
-        p.title = "Error in " + name + " (true − estimate), recorded and new, ±σ";
+        p.title = "Error in " + name + " (estimate − truth), recorded and new, ±σ";
         p.x_label = "t (s)";
         p.y_label = name + " error (" + kUnits[index] + ")";
         const ErrorSeries old_series = error_series(s, index, true);

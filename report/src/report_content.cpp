@@ -43,7 +43,15 @@ std::string format_json(const nlohmann::json& value) {
     if (value.is_string()) {
         return value.get<std::string>();
     }
-    return "–";  // null: the metric was not available (e.g. no truth)
+    return "–";  // null: the metric was not available
+}
+
+/// A metric's value; for one that needs the truth and had none, a dash that says so.
+std::string format_metric(const std::string& name, const nlohmann::json& value) {
+    if (value.is_null() && lessons::is_truth_metric(name)) {
+        return "— (no ground truth on this link)";
+    }
+    return format_json(value);
 }
 
 }  // namespace
@@ -74,7 +82,7 @@ std::vector<MetricRow> metric_rows(const nlohmann::json& metrics) {
     }
     for (const auto& [name, value] : metrics.items()) {
         if (!lessons::is_machine_dependent_metric(name)) {
-            rows.push_back({name, format_json(value)});
+            rows.push_back({name, format_metric(name, value)});
         }
     }
     return rows;

@@ -28,7 +28,8 @@ struct MetricRow {
 };
 
 /// Every metric of the run except the machine-dependent timings (the report of the same
-/// runs is the same document on every machine).
+/// runs is the same document on every machine). A metric that needs the ground truth, in a
+/// run without one, reads "— (no ground truth on this link)", never 0.
 std::vector<MetricRow> metric_rows(const nlohmann::json& metrics);
 
 /// A number in at most four significant digits ("0.0123", "1.2e-07").

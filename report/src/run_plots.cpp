@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "legofeup/core/pose_error.hpp"
 #include "legofeup/report/figure.hpp"
 
 namespace legofeup::report {
@@ -92,7 +93,7 @@ Figure errors(const RunRecording& rec, const std::string& title, int width) {
     for (int row = 0; row < 3; ++row) {
         const Component c = components[row];
         plot::Panel& p = figure.panel(row);
-        p.title = std::string("Error in ") + c.name + " (true − estimate) with ±σ";
+        p.title = std::string("Error in ") + c.name + " (estimate − truth) with ±σ";
         p.x_label = "t (s)";
         p.y_label = std::string(c.name) + " error (" + c.unit + ")";
         const auto sigma = column(
@@ -105,9 +106,8 @@ Figure errors(const RunRecording& rec, const std::string& title, int width) {
         p.lines.push_back({t,
                            column(s,
                                   [&](auto& k) {
-                                      const double truth[] = {k.truth.x, k.truth.y, k.truth.theta};
-                                      const double error = truth[c.index] - k.estimate(c.index);
-                                      return c.index == kTheta ? wrap_angle(error) : error;
+                                      // x̃ = x̂ − x, the heading wrapped (pose_error.hpp)
+                                      return pose_error(k.estimate, k.truth).vector()(c.index);
                                   }),
                            colors::kEstimate, 1.5, false, "error"});
     }

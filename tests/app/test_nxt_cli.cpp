@@ -1,15 +1,19 @@
 // The real-robot path end to end, as a teacher rehearses it: legofeup-nxt-emu (an emulated
 // NXT on the simulated robot, 30 ms latency each way) and `legofeup-cli run --link …` over
 // TCP and over a pseudo-terminal. The run completes the square and localises; pulling the
-// plug mid-run stops cleanly, says so, and keeps what was recorded.
+// plug mid-run stops cleanly, says so, and keeps what was recorded; without the truth port
+// the counts are still right and the errors absent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <thread>
+#include <utility>
 
 #include "support/program_test.hpp"
 
@@ -22,13 +26,14 @@ using legofeup::testing::Result;
 
 class NxtCli : public legofeup::testing::ProgramTest {
   protected:
-    /// Starts legofeup-nxt-emu in the background; returns its ready file (empty on failure).
-    nlohmann::json start_emulator(const std::string& arguments) {
-        const fs::path ready = dir_ / "ready.json";
+    /// Starts legofeup-nxt-emu in the background (its log is `<name>.log`); returns its
+    /// ready file (empty on failure).
+    nlohmann::json start_emulator(const std::string& arguments, const std::string& name = "emu") {
+        const fs::path ready = dir_ / (name + "-ready.json");
         start_in_background(LEGOFEUP_NXT_EMU,
                             "--latency-ms 30 --duration 600 --quiet --ready-file " + ready.string()
                                 + " " + arguments,
-                            "emu");
+                            name);
         if (!wait_for_file(ready, 10s)) {
             return {};
         }
@@ -101,6 +106,71 @@ TEST_F(NxtCli, PullingThePlugMidRunStopsCleanlyAndKeepsTheTrace) {
     EXPECT_EQ(s["steps_recorded"].get<long>(), rows);
     EXPECT_NE(s["interrupted"].get<std::string>().find("closed the link"), std::string::npos);
     EXPECT_FALSE(s["metrics"]["routine_finished"].get<bool>());
+}
+
+/// The trace's rows and the rows whose wall update was applied, counted from the file.
+std::pair<long, long> rows_and_applied_updates(const std::string& trace) {
+    std::istringstream lines(trace);
+    std::string header;
+    std::getline(lines, header);
+    const std::string before_update = header.substr(0, header.find(",update,") + 1);
+    const auto update_column = std::count(before_update.begin(), before_update.end(), ',');
+    long rows = 0;
+    long applied = 0;
+    for (std::string row; std::getline(lines, row); ++rows) {
+        std::size_t at = 0;
+        for (long comma = 0; comma < update_column; ++comma) {
+            at = row.find(',', at) + 1;
+        }
+        applied += row.compare(at, 8, "applied,") == 0 ? 1 : 0;
+    }
+    return {rows, applied};
+}
+
+TEST_F(NxtCli, WithoutTruthTheCountsAreTheTracesAndTheErrorsAreAbsentNotZero) {
+    // 25 s of experiment f through two emulated bricks: one driven without the truth port
+    // (as a real robot), one with it.
+    const fs::path short_run = dir_ / "short.toml";
+    std::ofstream(short_run) << "duration = 25\n";
+    const nlohmann::json blind = start_emulator("--tcp 0 -e f --seed 3", "blind");
+    const nlohmann::json seen = start_emulator("--tcp 0 -e f --seed 3", "seen");
+    ASSERT_TRUE(blind.contains("tcp")) << read_file(dir_ / "blind.log");
+    ASSERT_TRUE(seen.contains("tcp")) << read_file(dir_ / "seen.log");
+    const std::string run = "run -e f --no-plots -c " + short_run.string() + " --link ";
+    const Result without = run_program(
+        LEGOFEUP_CLI, run + blind["tcp"].get<std::string>() + " -o " + (dir_ / "blind").string());
+    ASSERT_EQ(without.exit_code, 0) << without.err << without.out;
+    const Result with = run_program(LEGOFEUP_CLI, run + seen["tcp"].get<std::string>() + " --truth "
+                                                      + seen["truth"].get<std::string>() + " -o "
+                                                      + (dir_ / "seen").string());
+    ASSERT_EQ(with.exit_code, 0) << with.err << with.out;
+
+    // The counts need no truth: they are the trace's, counted here from the file.
+    const auto [rows, applied] = rows_and_applied_updates(read_file(dir_ / "blind" / "trace.csv"));
+    const nlohmann::json blind_summary = summary("blind");
+    const nlohmann::json& m = blind_summary["metrics"];
+    EXPECT_GT(rows, 200) << m.dump(2);
+    EXPECT_GT(applied, 20) << m.dump(2);
+    EXPECT_EQ(m["steps"].get<long>(), rows);
+    EXPECT_EQ(m["updates_applied"].get<long>(), applied);
+    EXPECT_EQ(m["steps_without_truth"].get<long>(), rows);
+    // What needs the truth is absent (null), never 0; with the truth it has values.
+    const nlohmann::json seen_summary = summary("seen");
+    const nlohmann::json& t = seen_summary["metrics"];
+    EXPECT_EQ(t["steps_without_truth"].get<long>(), 0) << t.dump(2);
+    for (const char* key : {"rms_position_error_m", "final_position_error_m", "mean_nees",
+                            "nees_inside_fraction", "final_heading_error_rad", "kidnappings"}) {
+        EXPECT_TRUE(m[key].is_null()) << key << " = " << m[key];
+        EXPECT_TRUE(t[key].is_number()) << key << " = " << t[key];
+    }
+    EXPECT_LT(t["final_position_error_m"].get<double>(), 0.10) << t.dump(2);
+    // The printed summary says which is which.
+    EXPECT_NE(without.out.find("position error: — (no ground truth on this link)"),
+              std::string::npos)
+        << without.out;
+    EXPECT_NE(without.out.find(std::to_string(applied) + " applied"), std::string::npos)
+        << without.out;
+    EXPECT_EQ(with.out.find("no ground truth"), std::string::npos) << with.out;
 }
 
 TEST_F(NxtCli, BadNxtAddressesAndOptionsAreClearErrors) {

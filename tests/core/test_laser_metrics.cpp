@@ -48,18 +48,20 @@ TEST(LaserMetrics, EndToStartDistancesUseTheTrueStart) {
     metrics.add(snapshot_at(0.10, {-0.97, -0.96, 0.0}, {-0.88, -0.84, 0.0}),
                 Pose2{-1.02, -1.0, 0.0});
     const RunMetrics m = metrics.result();
-    EXPECT_NEAR(m.estimate_end_to_start, 0.05, 1e-12);
-    EXPECT_NEAR(m.odometry_end_to_start, 0.20, 1e-12);
+    ASSERT_TRUE(m.truth.has_value());
+    const TruthMetrics& t = *m.truth;
+    EXPECT_NEAR(t.estimate_end_to_start, 0.05, 1e-12);
+    EXPECT_NEAR(t.odometry_end_to_start, 0.20, 1e-12);
     // Final errors against the final truth: estimate (0.05, 0.04), odometry (0.14, 0.16).
-    EXPECT_NEAR(m.final_position_error, std::hypot(0.05, 0.04), 1e-12);
-    EXPECT_NEAR(m.final_odometry_position_error, std::hypot(0.14, 0.16), 1e-12);
-    EXPECT_NEAR(m.odometry_to_estimate_final_error_ratio,
+    EXPECT_NEAR(t.final_position_error, std::hypot(0.05, 0.04), 1e-12);
+    EXPECT_NEAR(t.final_odometry_position_error, std::hypot(0.14, 0.16), 1e-12);
+    EXPECT_NEAR(t.odometry_to_estimate_final_error_ratio,
                 std::hypot(0.14, 0.16) / std::hypot(0.05, 0.04), 1e-9);
 }
 
 // Truth at the origin, kidnapped to (1, 0) at t = 1 s; the estimate's error per step is
 // given, the truth jumps once.
-RunMetrics kidnapping_run(const std::vector<double>& errors_after, bool jump = true) {
+TruthMetrics kidnapping_run(const std::vector<double>& errors_after, bool jump = true) {
     RunMetricsAccumulator metrics;
     const Pose2 home{0.0, 0.0, 0.0};
     const Pose2 away{jump ? 1.0 : 0.0, 0.0, 0.0};
@@ -70,13 +72,13 @@ RunMetrics kidnapping_run(const std::vector<double>& errors_after, bool jump = t
         const double time = 1.0 + 0.1 * static_cast<double>(i);
         metrics.add(snapshot_at(time, {away.x + errors_after[i], 0.0, 0.0}, home), away);
     }
-    return metrics.result();
+    return metrics.result().truth.value();
 }
 
 TEST(LaserMetrics, TimeToRecoverIsTheStartOfTheFinalGoodStretch) {
     // Errors after the kidnapping (one per 0.1 s from t = 1.0): large, briefly good at
     // 1.3–1.4, bad again at 1.5, good for good from 1.6 s.
-    const RunMetrics m =
+    const TruthMetrics m =
         kidnapping_run({1.0, 0.8, 0.5, 0.05, 0.09, 0.2, 0.08, 0.02, 0.01, 0.0, 0.03});
     EXPECT_EQ(m.kidnappings, 1u);
     EXPECT_TRUE(m.kidnap_recovered);
@@ -84,14 +86,14 @@ TEST(LaserMetrics, TimeToRecoverIsTheStartOfTheFinalGoodStretch) {
 }
 
 TEST(LaserMetrics, NeverRecoveredOrNeverKidnappedIsMinusOne) {
-    const RunMetrics lost = kidnapping_run({1.0, 0.05, 0.05, 0.3});
+    const TruthMetrics lost = kidnapping_run({1.0, 0.05, 0.05, 0.3});
     EXPECT_EQ(lost.kidnappings, 1u);
     EXPECT_FALSE(lost.kidnap_recovered);
     EXPECT_EQ(lost.time_to_recover, -1.0);
     // An error exactly at the threshold is not recovered.
     EXPECT_FALSE(kidnapping_run({1.0, kRecoveredPositionError}).kidnap_recovered);
 
-    const RunMetrics calm = kidnapping_run({0.01, 0.01}, false);
+    const TruthMetrics calm = kidnapping_run({0.01, 0.01}, false);
     EXPECT_EQ(calm.kidnappings, 0u);
     EXPECT_FALSE(calm.kidnap_recovered);
     EXPECT_EQ(calm.time_to_recover, -1.0);
@@ -107,7 +109,7 @@ TEST(LaserMetrics, TeleportsReportedByTheTruthCountEvenWhenSmall) {
     truth.teleports = 1;
     metrics.add(snapshot_at(0.1, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}), truth);
     metrics.add(snapshot_at(0.2, {0.05, 0.0, 0.0}, {0.0, 0.0, 0.0}), truth);
-    RunMetrics m = metrics.result();
+    const TruthMetrics m = metrics.result().truth.value();
     EXPECT_EQ(m.kidnappings, 1u);
     EXPECT_TRUE(m.kidnap_recovered);
     EXPECT_NEAR(m.time_to_recover, 0.0, 1e-12);  // within 10 cm straight away
@@ -115,7 +117,7 @@ TEST(LaserMetrics, TeleportsReportedByTheTruthCountEvenWhenSmall) {
     RunMetricsAccumulator turned;
     turned.add(snapshot_at(0.0, {0, 0, 0}, {0, 0, 0}), Pose2{0.0, 0.0, 0.0});
     turned.add(snapshot_at(0.1, {0, 0, 0}, {0, 0, 0}), Pose2{0.0, 0.0, kKidnapHeadingJump + 0.1});
-    EXPECT_EQ(turned.result().kidnappings, 1u);
+    EXPECT_EQ(turned.result().truth.value().kidnappings, 1u);
 }
 
 }  // namespace

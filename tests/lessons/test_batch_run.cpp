@@ -25,13 +25,19 @@ TEST(BatchRun, ResultsAreInInputOrderAndTheSameForAnyNumberOfJobs) {
     for (std::size_t k = 0; k < runs.size(); ++k) {
         // Each result is the run of its own seed, whoever ran it.
         const RunResult alone = run_lockstep(runs[k]);
-        EXPECT_EQ(one[k].metrics.rms_position_error, alone.metrics.rms_position_error) << k;
-        EXPECT_EQ(three[k].metrics.rms_position_error, alone.metrics.rms_position_error) << k;
-        EXPECT_EQ(three[k].metrics.mean_nees, alone.metrics.mean_nees) << k;
+        EXPECT_EQ(one[k].metrics.truth.value().rms_position_error,
+                  alone.metrics.truth.value().rms_position_error)
+            << k;
+        EXPECT_EQ(three[k].metrics.truth.value().rms_position_error,
+                  alone.metrics.truth.value().rms_position_error)
+            << k;
+        EXPECT_EQ(three[k].metrics.truth.value().mean_nees, alone.metrics.truth.value().mean_nees)
+            << k;
         EXPECT_EQ(three[k].metrics.steps, alone.metrics.steps) << k;
     }
     // Different seeds really gave different runs.
-    EXPECT_NE(one[0].metrics.rms_position_error, one[1].metrics.rms_position_error);
+    EXPECT_NE(one[0].metrics.truth.value().rms_position_error,
+              one[1].metrics.truth.value().rms_position_error);
 }
 
 // Counts its steps, and remembers which thread made it.

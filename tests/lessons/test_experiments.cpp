@@ -100,7 +100,7 @@ TEST_P(ExperimentOutcomes, EachStepShowsWhatTheGuideSays) {
         EXPECT_TRUE(result.routine_finished) << id;
         m[id[0]] = result.metrics;
     }
-    const auto rms = [&](char id) { return m[id].rms_position_error; };
+    const auto rms = [&](char id) { return m[id].truth.value().rms_position_error; };
     const double degree = degrees_to_radians(1.0);
 
     // a: odometry only. E_b = 1.03 costs ≈2.6° at every corner and E_d = 1.005 ≈2.4° per
@@ -137,8 +137,8 @@ TEST_P(ExperimentOutcomes, EachStepShowsWhatTheGuideSays) {
         EXPECT_LT(rms('f'), rms(other)) << "f against " << other;
     }
     EXPECT_LT(rms('f'), 0.06);
-    EXPECT_GE(m['f'].nees_inside_fraction, 0.80);
-    EXPECT_LT(m['f'].mean_nees, m['f'].nees_bounds.upper);
+    EXPECT_GE(m['f'].truth.value().nees_inside_fraction, 0.80);
+    EXPECT_LT(m['f'].truth.value().mean_nees, m['f'].nees_bounds.upper);
 }
 
 INSTANTIATE_TEST_SUITE_P(TwentySeeds, ExperimentOutcomes,

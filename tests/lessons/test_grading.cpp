@@ -72,7 +72,7 @@ TEST(Grading, AggregatesArePerSeedMetricsAveragedIndependentlyOfTheRunner) {
     for (std::uint64_t seed = 1001; seed <= 1003; ++seed) {
         RunConfig config = submission_of(reference_tuning()).tuned;
         config.seed = seed;
-        const double rms = run_lockstep(resolve(config)).metrics.rms_position_error;
+        const double rms = run_lockstep(resolve(config)).metrics.truth.value().rms_position_error;
         sum += rms;
         sum_squares += rms * rms;
         largest = std::max(largest, rms);

@@ -104,7 +104,7 @@ TEST(LinkRun, OnePredictOnlyStepPerMissedPeriodAndNoneForAPausedFrame) {
     // One loop step per control period (the run may stop just before the last frame).
     EXPECT_NEAR(counter.steps, link.periods, 1);
     // Still localised: the frames that did come carry all the motion (cumulative counts).
-    EXPECT_LT(result.metrics.final_position_error, 0.1);
+    EXPECT_LT(result.metrics.truth.value().final_position_error, 0.1);
 }
 
 }  // namespace

@@ -218,13 +218,16 @@ TEST(RunLog, ReplayWithTheRecordedConfigurationReproducesEveryEstimateExactly) {
         ASSERT_EQ(result.steps[i].new_estimate, live[i].estimate) << "step " << i;
         ASSERT_EQ(result.steps[i].time, live[i].time);
     }
-    ASSERT_TRUE(result.old_metrics.has_value());
+    ASSERT_TRUE(result.old_metrics.truth.has_value());
+    ASSERT_TRUE(result.new_metrics.truth.has_value());
     const RunMetrics& live_metrics = recorded.result.metrics;
-    EXPECT_EQ(result.old_metrics->rms_position_error, live_metrics.rms_position_error);
-    EXPECT_EQ(result.old_metrics->final_position_error, live_metrics.final_position_error);
-    EXPECT_EQ(result.old_metrics->updates_applied, live_metrics.updates_applied);
-    EXPECT_EQ(result.old_metrics->mean_nees, live_metrics.mean_nees);
-    EXPECT_EQ(result.new_metrics->mean_nees, live_metrics.mean_nees);
+    ASSERT_TRUE(live_metrics.truth.has_value());
+    const TruthMetrics& live_truth = *live_metrics.truth;
+    EXPECT_EQ(result.old_metrics.truth->rms_position_error, live_truth.rms_position_error);
+    EXPECT_EQ(result.old_metrics.truth->final_position_error, live_truth.final_position_error);
+    EXPECT_EQ(result.old_metrics.updates_applied, live_metrics.updates_applied);
+    EXPECT_EQ(result.old_metrics.truth->mean_nees, live_truth.mean_nees);
+    EXPECT_EQ(result.new_metrics.truth->mean_nees, live_truth.mean_nees);
 }
 
 TEST(RunLog, RefilterWithOtherNoiseChangesTheEstimatesOnTheIdenticalFrames) {
@@ -247,8 +250,10 @@ TEST(RunLog, RefilterWithOtherNoiseChangesTheEstimatesOnTheIdenticalFrames) {
     }
     EXPECT_GT(largest_change, 1e-3);         // metres: the estimate moved
     EXPECT_GT(largest_variance_ratio, 1.5);  // and trusts itself less
-    ASSERT_TRUE(result.new_metrics.has_value());
-    EXPECT_NE(result.new_metrics->rms_position_error, result.old_metrics->rms_position_error);
+    ASSERT_TRUE(result.new_metrics.truth.has_value());
+    ASSERT_TRUE(result.old_metrics.truth.has_value());
+    EXPECT_NE(result.new_metrics.truth->rms_position_error,
+              result.old_metrics.truth->rms_position_error);
 
     // The new loop got exactly the recorded frames (not a new simulation).
     LegoFeupLoop loop(resolve(tuned).loop);
@@ -292,7 +297,15 @@ TEST(RunLog, StepsWithoutAFrameAreRecordedAndReplayedExactly) {
     EXPECT_FALSE(log.records.back().truth.has_value());
     const RefilterResult replay = refilter(log, log.config);
     EXPECT_EQ(replay.old_replay_deviation, 0.0);
-    EXPECT_FALSE(replay.old_metrics.has_value());  // no truth, no errors
+    // No truth, no errors; the counts all the same, as the live run's.
+    EXPECT_FALSE(result.metrics.truth.has_value());
+    EXPECT_FALSE(replay.old_metrics.truth.has_value());
+    EXPECT_EQ(result.metrics.steps, log.records.size());
+    EXPECT_EQ(result.steps_without_truth, log.records.size());
+    EXPECT_EQ(replay.old_metrics.steps, result.metrics.steps);
+    EXPECT_GT(result.metrics.updates_applied, 0U);
+    EXPECT_EQ(replay.old_metrics.updates_applied, result.metrics.updates_applied);
+    EXPECT_EQ(replay.old_metrics.updates_rejected, result.metrics.updates_rejected);
     ASSERT_EQ(replay.steps.size(), live.snapshots.size());
     for (std::size_t i = 0; i < replay.steps.size(); ++i) {
         ASSERT_EQ(replay.steps[i].old_estimate, live.snapshots[i].estimate) << "step " << i;

@@ -6,10 +6,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 
+#include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/report/student_report.hpp"
+#include "report_content.hpp"
 #include "report_pdf.hpp"
 
 namespace legofeup::report {
@@ -134,6 +137,32 @@ TEST(StudentReport, RunStepFillsMetricsChecksRecordingAndWorld) {
     EXPECT_DOUBLE_EQ(a.checks[1].actual, a.metrics["rms_position_error_m"].get<double>());
     EXPECT_GT(a.recording.steps().size(), 100U);
     EXPECT_FALSE(a.world.walls.empty());
+}
+
+TEST(StudentReport, AMetricWithoutTruthReadsAsAbsentNotZero) {
+    // The same counts, once without the truth and once with it (measured as 0.012 m).
+    lessons::RunResult result;
+    result.metrics.steps = 400;
+    result.metrics.updates_applied = 120;
+    const auto rows_of = [](const lessons::RunResult& run) {
+        std::map<std::string, std::string> rows;
+        for (const content::MetricRow& row :
+             content::metric_rows(lessons::result_metrics_to_json(run))) {
+            rows[row.name] = row.value;
+        }
+        return rows;
+    };
+    auto blind = rows_of(result);
+    EXPECT_EQ(blind["final_position_error_m"], "— (no ground truth on this link)");
+    EXPECT_EQ(blind["mean_nees"], "— (no ground truth on this link)");
+    EXPECT_EQ(blind["updates_applied"], "120");
+    EXPECT_EQ(blind["steps"], "400");
+    result.metrics.truth = TruthMetrics{};
+    result.metrics.truth->final_position_error = 0.012;
+    auto seen = rows_of(result);
+    EXPECT_EQ(seen["final_position_error_m"], "0.012");
+    EXPECT_EQ(seen["mean_nees"], "0");  // measured as 0: shown as 0
+    EXPECT_EQ(seen["updates_applied"], "120");
 }
 
 TEST(StudentReport, HtmlHasEveryStepEscapedAnswersCheckOutcomesAndInlinePlots) {

@@ -1,7 +1,8 @@
 // File ▸ Re-filter recorded run… and File ▸ Record runs (QtTest, offscreen): a run log
 // recorded by a short lockstep run, replayed with other Q and R — the old estimate is the
-// recorded one, the new differs, the table compares them; a bad log is refused with its line;
-// a live run recorded from the window replays exactly.
+// recorded one, the new differs, the table compares them (a log without truth: the counts,
+// and a dash for the errors); a bad log is refused with its line; a live run recorded from the
+// window replays exactly.
 
 #include <qcustomplot.h>
 #include <QFile>
@@ -17,6 +18,8 @@
 #include "legofeup/lessons/lesson.hpp"
 #include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
+#include "legofeup/sim/lockstep_link.hpp"
+#include "legofeup/sim/simulator.hpp"
 #include "legofeup/ui/panels/setting_editor.hpp"
 #include "legofeup/ui/refilter/refilter_dialog.hpp"
 #include "legofeup/ui/refilter/refilter_plots.hpp"
@@ -133,11 +136,11 @@ class RefilterDialogTest : public QObject {
         QCOMPARE(table.columnCount(), 2);
         QCOMPARE(table.rowCount(), 8);
         QCOMPARE(table.item(0, 0)->text(),
-                 QStringLiteral("%1 m").arg(dialog.result()->old_metrics->rms_position_error, 0,
-                                            'f', 4));
+                 QStringLiteral("%1 m").arg(
+                     dialog.result()->old_metrics.truth.value().rms_position_error, 0, 'f', 4));
         QCOMPARE(table.item(0, 1)->text(),
-                 QStringLiteral("%1 m").arg(dialog.result()->new_metrics->rms_position_error, 0,
-                                            'f', 4));
+                 QStringLiteral("%1 m").arg(
+                     dialog.result()->new_metrics.truth.value().rms_position_error, 0, 'f', 4));
         QVERIFY(table.item(0, 0)->text() != table.item(0, 1)->text());
 
         // A value the filter cannot take is refused, never clamped.
@@ -152,8 +155,8 @@ class RefilterDialogTest : public QObject {
         enter(dialog, "filter.q11", QStringLiteral("1e-12"));
         enter(dialog, "filter.q22", QStringLiteral("1e-12"));
         QCOMPARE(dialog.newConfig().filter.q22, 1e-12);  // re-filtered on Enter
-        QVERIFY(dialog.result()->new_metrics->rms_position_error
-                > 2.0 * dialog.result()->old_metrics->rms_position_error);
+        QVERIFY(dialog.result()->new_metrics.truth.value().rms_position_error
+                > 2.0 * dialog.result()->old_metrics.truth.value().rms_position_error);
         testing::save_screenshot(dialog, "refilter");
     }
 
@@ -183,6 +186,41 @@ class RefilterDialogTest : public QObject {
                  log_path_);
         QCOMPARE(dialog.refilterNow(), QString());  // the good log is still there
         QVERIFY(dialog.result().has_value());
+    }
+
+    void aLogWithoutTruthShowsTheCountsAndSaysTheErrorsNeedOne() {
+        // A short drive recorded as from a real robot: the truth withheld.
+        lessons::RunConfig config = one_lap();
+        config.duration = 10.0;
+        const lessons::ResolvedRun run = lessons::resolve(config);
+        sim::WorldSpec world = run.world;
+        world.start = run.true_start;
+        sim::Simulator simulator(world, run.robot, run.config.simulator, run.config.seed);
+        sim::LockstepLink link(simulator);
+        lessons::UnknownTruth unknown;
+        const QString path = dir_.filePath(QStringLiteral("blind.log"));
+        lessons::RunResult live;
+        {
+            lessons::RunLogWriter writer(path.toStdString(), run, "step f, no truth");
+            live = lessons::run_with_link(run, link, unknown, &writer);
+            writer.close();
+        }
+        QVERIFY(live.metrics.updates_applied > 0);
+
+        RefilterDialog dialog(*session_);
+        QCOMPARE(dialog.openLog(path), QString());
+        QCOMPARE(dialog.refilterNow(), QString());
+        const QTableWidget& table = dialog.metricsTable();
+        for (int row = 0; row < 6; ++row) {  // the errors and the NEES need the truth
+            QCOMPARE(table.item(row, 0)->text(), QStringLiteral("— (no ground truth)"));
+            QCOMPARE(table.item(row, 1)->text(), QStringLiteral("— (no ground truth)"));
+        }
+        // The counts need none: the live run's, in both columns (same settings).
+        const QString updates = QStringLiteral("%1 / %2")
+                                    .arg(live.metrics.updates_applied)
+                                    .arg(live.metrics.updates_rejected);
+        QCOMPARE(table.item(7, 0)->text(), updates);
+        QCOMPARE(table.item(7, 1)->text(), updates);
     }
 
     void aLiveRunRecordedFromTheWindowReplaysExactly() {

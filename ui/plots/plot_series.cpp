@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "legofeup/core/angles.hpp"
+#include "legofeup/core/pose_error.hpp"
 
 namespace legofeup::ui {
 
@@ -41,13 +42,12 @@ double variance(const RunSample& s, int i) {
 double sigma(const RunSample& s, int i) {
     return std::sqrt(std::max(variance(s, i), 0.0));
 }
-/// x̂ − x (or ŷ − y), m; NaN without truth.
-double position_error(const RunSample& s, int i) {
+/// Component `i` of x̃ = x̂ − x (pose_error.hpp): m, or rad for θ; NaN without truth.
+double pose_error_component(const RunSample& s, int i) {
     if (!s.truth) {
         return kNaN;
     }
-    const StateVector truth = to_state(s.truth->pose);
-    return s.snapshot.estimate(i) - truth(i);
+    return pose_error(s.snapshot.estimate, s.truth->pose).vector()(i);
 }
 /// The measured IR distance, m; NaN (a gap) when the reading is out of range.
 double ir_distance(const RunSample& s, int sensor) {
@@ -77,10 +77,10 @@ std::optional<double> sigma_y_lower(const RunSample& s) {
     return -sigma(s, kY);
 }
 std::optional<double> error_x(const RunSample& s) {
-    return position_error(s, kX);
+    return pose_error_component(s, kX);
 }
 std::optional<double> error_y(const RunSample& s) {
-    return position_error(s, kY);
+    return pose_error_component(s, kY);
 }
 std::optional<double> sigma_theta_upper(const RunSample& s) {
     return radians_to_degrees(sigma(s, kTheta));
@@ -91,10 +91,7 @@ std::optional<double> sigma_theta_lower(const RunSample& s) {
 /// θ̂ − θ wrapped to (−180°, 180°]: an estimate of π − 0.01 against a truth of −π + 0.01
 /// is 0.02 rad off, not 2π − 0.02.
 std::optional<double> error_theta(const RunSample& s) {
-    if (!s.truth) {
-        return kNaN;
-    }
-    return radians_to_degrees(wrap_angle(s.snapshot.estimate(kTheta) - s.truth->pose.theta));
+    return radians_to_degrees(pose_error_component(s, kTheta));
 }
 std::optional<double> v1_true(const RunSample& s) {
     return s.truth ? s.truth->wheel_surface_speeds.right : kNaN;
@@ -156,9 +153,9 @@ int bearing_gated(const RunSample& s, std::span<double, kMaxPointsPerSample> out
 bool has_heading_sensor(const RunSample& s) {
     return s.snapshot.readings.has_gyro || s.snapshot.readings.has_compass;
 }
-/// `heading` − θ_true wrapped to (−180°, 180°]; NaN without truth.
+/// `heading` − θ_true wrapped to (−180°, 180°] (heading_error); NaN without truth.
 double heading_error_degrees(const RunSample& s, double heading) {
-    return s.truth ? radians_to_degrees(wrap_angle(heading - s.truth->pose.theta)) : kNaN;
+    return s.truth ? radians_to_degrees(heading_error(heading, s.truth->pose.theta)) : kNaN;
 }
 /// Drawn beside the gyro's and the compass's errors, so only when the run has one of them.
 std::optional<double> heading_error_estimate(const RunSample& s) {
@@ -276,7 +273,7 @@ std::optional<double> position_error_of(const RunSample& s, FilterKind kind) {
     if (!s.truth) {
         return kNaN;
     }
-    return std::hypot((*of->estimate)(kX)-s.truth->pose.x, (*of->estimate)(kY)-s.truth->pose.y);
+    return pose_error(*of->estimate, s.truth->pose).position();
 }
 std::optional<double> ekf_position_error(const RunSample& s) {
     return position_error_of(s, FilterKind::Ekf);

@@ -24,31 +24,43 @@ QString degrees(double radians) {
     return QStringLiteral("%1°").arg(radians * 180.0 / std::numbers::pi, 0, 'f', 2);
 }
 
+/// A row that needs the truth: `value` of the run's TruthMetrics, or a dash that says why
+/// there is none (a log of a real robot).
+template <typename Value>
+std::function<QString(const RunMetrics&)> with_truth(Value value) {
+    return [value](const RunMetrics& m) {
+        return m.truth ? value(*m.truth, m)
+                       : QCoreApplication::translate("RefilterMetrics", "— (no ground truth)");
+    };
+}
+
 const std::array<Row, 8>& rows() {
+    using Truth = const TruthMetrics&;
+    using Run = const RunMetrics&;
     static const std::array<Row, 8> kRows = {{
         {QT_TRANSLATE_NOOP("RefilterMetrics", "RMS position error"),
-         [](const RunMetrics& m) { return metres(m.rms_position_error); }},
+         with_truth([](Truth t, Run) { return metres(t.rms_position_error); })},
         {QT_TRANSLATE_NOOP("RefilterMetrics", "Final position error"),
-         [](const RunMetrics& m) { return metres(m.final_position_error); }},
+         with_truth([](Truth t, Run) { return metres(t.final_position_error); })},
         {QT_TRANSLATE_NOOP("RefilterMetrics", "Largest position error"),
-         [](const RunMetrics& m) { return metres(m.max_position_error); }},
+         with_truth([](Truth t, Run) { return metres(t.max_position_error); })},
         {QT_TRANSLATE_NOOP("RefilterMetrics", "RMS heading error"),
-         [](const RunMetrics& m) { return degrees(m.rms_heading_error); }},
+         with_truth([](Truth t, Run) { return degrees(t.rms_heading_error); })},
         {QT_TRANSLATE_NOOP("RefilterMetrics", "Mean NEES (χ²(3) 95 %)"),
-         [](const RunMetrics& m) {
+         with_truth([](Truth t, Run m) {
              return QStringLiteral("%1  [%2, %3]")
-                 .arg(m.mean_nees, 0, 'f', 2)
+                 .arg(t.mean_nees, 0, 'f', 2)
                  .arg(m.nees_bounds.lower, 0, 'f', 2)
                  .arg(m.nees_bounds.upper, 0, 'f', 2);
-         }},
+         })},
         {QT_TRANSLATE_NOOP("RefilterMetrics", "Steps with NEES inside"),
-         [](const RunMetrics& m) {
-             return QStringLiteral("%1 %").arg(m.nees_inside_fraction * 100.0, 0, 'f', 1);
-         }},
+         with_truth([](Truth t, Run) {
+             return QStringLiteral("%1 %").arg(t.nees_inside_fraction * 100.0, 0, 'f', 1);
+         })},
         {QT_TRANSLATE_NOOP("RefilterMetrics", "Mean NIS"),
-         [](const RunMetrics& m) { return QString::number(m.mean_nis, 'f', 2); }},
+         [](Run m) { return QString::number(m.mean_nis, 'f', 2); }},
         {QT_TRANSLATE_NOOP("RefilterMetrics", "Wall updates applied / rejected"),
-         [](const RunMetrics& m) {
+         [](Run m) {
              return QStringLiteral("%1 / %2").arg(m.updates_applied).arg(m.updates_rejected);
          }},
     }};
@@ -69,8 +81,7 @@ void show_refilter_metrics(QTableWidget& table, const std::optional<RunMetrics>&
         table.setVerticalHeaderItem(row, new QTableWidgetItem(QCoreApplication::translate(
                                              "RefilterMetrics", definition.label)));
         const auto cell = [&](int column, const std::optional<RunMetrics>& metrics) {
-            auto* item = new QTableWidgetItem(metrics ? definition.value(*metrics)
-                                                      : QObject::tr("no truth"));
+            auto* item = new QTableWidgetItem(metrics ? definition.value(*metrics) : QString());
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             table.setItem(row, column, item);
         };

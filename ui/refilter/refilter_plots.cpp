@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "legofeup/core/pose_error.hpp"
 #include "legofeup/ui/plots/plot_style.hpp"
 
 namespace legofeup::ui {
@@ -19,8 +20,9 @@ QCPCurve* path_curve(QCustomPlot& plot, const QString& name) {
     return curve;
 }
 
+/// ‖(x̂, ŷ) − (x, y)‖ of pose_error, m.
 double distance(const Pose2& truth, const StateVector& estimate) {
-    return std::hypot(estimate(0) - truth.x, estimate(1) - truth.y);
+    return pose_error(estimate, truth).position();
 }
 
 }  // namespace

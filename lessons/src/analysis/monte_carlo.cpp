@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
+#include <string>
 
-#include "legofeup/core/angles.hpp"
 #include "legofeup/core/consistency.hpp"
+#include "legofeup/core/pose_error.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
 namespace legofeup::lessons::analysis {
@@ -63,15 +65,12 @@ void StepRecorder::on_step(const LoopSnapshot& snapshot, const GroundTruth& trut
     if (!truth_known(truth)) {
         return;
     }
-    const Pose2& pose = truth.pose;
-    const double dx = pose.x - snapshot.estimate(kX);
-    const double dy = pose.y - snapshot.estimate(kY);
-    const double dtheta = wrap_angle(pose.theta - snapshot.estimate(kTheta));
+    const PoseError error = pose_error(snapshot.estimate, truth.pose);  // x̃ = x̂ − x
     samples_.push_back({
-        normalized_estimation_error(to_state(pose), snapshot.estimate, snapshot.covariance),
+        normalized_estimation_error(error, snapshot.covariance),
         snapshot.update.status == StepStatus::Applied ? snapshot.update.nis : kNan,
-        dx * dx + dy * dy,
-        dtheta * dtheta,
+        error.position() * error.position(),
+        error.theta * error.theta,
     });
 }
 
@@ -102,18 +101,24 @@ StepSums& StepSums::operator+=(const StepSums& other) {
 
 RunRecord make_run_record(std::size_t index, std::uint64_t seed, const RunResult& result) {
     const RunMetrics& m = result.metrics;
+    if (!m.truth) {
+        throw std::runtime_error("run " + std::to_string(index) + " (seed " + std::to_string(seed)
+                                 + ") had no ground truth: a Monte Carlo analysis scores its "
+                                   "runs against the simulator's truth");
+    }
+    const TruthMetrics& t = *m.truth;
     return {index,
             seed,
             result.routine_finished,
             m.steps,
             m.updates_applied,
-            m.rms_position_error,
-            m.max_position_error,
-            m.final_position_error,
-            m.rms_heading_error,
-            m.final_heading_error,
-            m.mean_nees,
-            m.nees_inside_fraction,
+            t.rms_position_error,
+            t.max_position_error,
+            t.final_position_error,
+            t.rms_heading_error,
+            t.final_heading_error,
+            t.mean_nees,
+            t.nees_inside_fraction,
             m.mean_nis};
 }
 

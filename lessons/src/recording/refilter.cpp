@@ -49,9 +49,17 @@ RefilterResult refilter(const RunLog& log, const RunConfig& new_config) {
 
     RefilterResult result;
     result.steps.resize(log.records.size());
+    // Every step is counted; those with a recorded truth are also scored against it.
     RunMetricsAccumulator old_metrics;
     RunMetricsAccumulator new_metrics;
-    bool any_truth = false;
+    const auto add = [](RunMetricsAccumulator& metrics, const RunLogRecord& record,
+                        const LoopSnapshot& snapshot) {
+        if (record.truth) {
+            metrics.add(snapshot, *record.truth);
+        } else {
+            metrics.add(snapshot);
+        }
+    };
 
     std::size_t index = 0;
     replay_run_log(log, old_loop, [&](const RunLogRecord& record, const LoopSnapshot& snapshot) {
@@ -63,10 +71,7 @@ RefilterResult refilter(const RunLog& log, const RunConfig& new_config) {
         step.old_covariance = snapshot.covariance;
         result.old_replay_deviation =
             std::max(result.old_replay_deviation, deviation(record, snapshot));
-        if (record.truth) {
-            any_truth = true;
-            old_metrics.add(snapshot, *record.truth);
-        }
+        add(old_metrics, record, snapshot);
     });
     index = 0;
     // Open loop: new_loop's controller computes a command at every step, but the robot
@@ -75,14 +80,10 @@ RefilterResult refilter(const RunLog& log, const RunConfig& new_config) {
         RefilterStep& step = result.steps[index++];
         step.new_estimate = snapshot.estimate;
         step.new_covariance = snapshot.covariance;
-        if (record.truth) {
-            new_metrics.add(snapshot, *record.truth);
-        }
+        add(new_metrics, record, snapshot);
     });
-    if (any_truth) {
-        result.old_metrics = old_metrics.result();
-        result.new_metrics = new_metrics.result();
-    }
+    result.old_metrics = old_metrics.result();
+    result.new_metrics = new_metrics.result();
     return result;
 }
 

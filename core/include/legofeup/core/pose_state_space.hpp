@@ -15,7 +15,8 @@ struct PoseStateSpace {
 
     static void normalize(StateVector& x) { x(kTheta) = wrap_angle(x(kTheta)); }
 
-    /// a − b with the heading difference wrapped (used for errors, NEES and sigma points).
+    /// a − b with the heading difference wrapped (sigma points; a pose's error against the
+    /// truth is pose_error.hpp's).
     static StateVector difference(const StateVector& a, const StateVector& b) {
         return {a(kX) - b(kX), a(kY) - b(kY), wrap_angle(a(kTheta) - b(kTheta))};
     }

@@ -42,7 +42,8 @@ struct CheckResult {
 };
 
 /// Evaluates checks against a metrics object (summary.json's "metrics"; booleans count as
-/// 0/1). A missing or non-numeric metric fails its check with a message saying so.
+/// 0/1). A missing or non-numeric metric fails its check with a message saying so — a null
+/// one that needs the ground truth (is_truth_metric) says that the run had none.
 std::vector<CheckResult> evaluate_checks(const std::vector<MetricCheck>& checks,
                                          const nlohmann::json& metrics);
 

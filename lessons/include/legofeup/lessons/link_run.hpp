@@ -20,7 +20,8 @@
 
 namespace legofeup::lessons {
 
-/// Sees every step of a run: what the loop computed and what really happened.
+/// Sees every step of a run: what the loop computed and what really happened (a NaN pose,
+/// see truth_known, for a step without a truth).
 class RunObserver {
   public:
     virtual ~RunObserver() = default;
@@ -29,15 +30,20 @@ class RunObserver {
 
 struct RunResult {
     RunMetrics metrics;
-    bool routine_finished = false;          ///< false: stopped at the time limit
-    double wall_seconds = 0.0;              ///< how long the run took on this machine
-    std::uint64_t frames_missing = 0;       ///< control periods run without a frame
-    std::uint64_t steps_without_truth = 0;  ///< steps whose truth never arrived (not in metrics)
+    bool routine_finished = false;     ///< false: stopped at the time limit
+    double wall_seconds = 0.0;         ///< how long the run took on this machine
+    std::uint64_t frames_missing = 0;  ///< control periods run without a frame
+    /// Steps whose own truth was not known: it had not arrived (the last one stood in for
+    /// the metrics, if there was one), or the link has none (a real robot: every step).
+    std::uint64_t steps_without_truth = 0;
 };
 
-/// A real robot's truth: nobody knows its pose. Every step gets a GroundTruth whose pose is
-/// NaN, so observers still see every step (the trace leaves the truth cells empty) and the
-/// metrics, which need a truth, stay empty.
+/// A truth whose pose is unknown (NaN): what observers see for a step without one.
+GroundTruth unknown_truth(double time);
+
+/// A real robot's truth: nobody knows its pose. Every step gets unknown_truth, so observers
+/// still see every step (the trace leaves the truth cells empty) and the metrics count it
+/// without scoring it (RunMetrics::truth stays empty).
 class UnknownTruth final : public TruthSource {
   public:
     std::optional<GroundTruth> truth_at(double time) override;

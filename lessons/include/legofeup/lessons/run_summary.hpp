@@ -12,7 +12,14 @@ namespace legofeup::lessons {
 /// Every setting, nested by section as in the TOML files.
 nlohmann::json config_to_json(const RunConfig& config);
 
+/// The metrics as summary.json names them. Those that need the ground truth
+/// (is_truth_metric) are null when the run had none: absent, never a 0 that reads as
+/// measured.
 nlohmann::json metrics_to_json(const RunMetrics& metrics);
+
+/// Whether the metric `name` of summary.json needs the ground truth (an error, the NEES, a
+/// kidnapping): null in a run without one, such as a real robot.
+bool is_truth_metric(std::string_view name);
 
 /// summary.json's "metrics" object: metrics_to_json of the run's metrics plus how the run
 /// went (routine_finished, frames_missing, wall time, …). Lesson checks name its keys.

@@ -14,7 +14,7 @@
 namespace legofeup::report {
 
 /// "refilter_trajectory" (walls, truth when known, recorded and new estimate) and, when the
-/// truth is known, "refilter_errors" (true − estimate in x, y, θ for both, each with ±σ).
+/// truth is known, "refilter_errors" (estimate − truth in x, y, θ for both, each with ±σ).
 std::vector<RunFigure> refilter_figures(const lessons::RefilterResult& result,
                                         const sim::WorldSpec& world, const std::string& title,
                                         int width = 1200);

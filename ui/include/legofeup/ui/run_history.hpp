@@ -29,7 +29,7 @@ struct RunSample {
     LoopSnapshot snapshot;
     /// The simulator's truth at the step's time (none over a link without truth, e.g. NXT).
     std::optional<GroundTruth> truth;
-    /// NEES (truth − estimate)ᵀ P⁻¹ (truth − estimate); NaN without truth.
+    /// NEES x̃ᵀ P⁻¹ x̃ of the pose error x̃ = x̂ − x (pose_error.hpp); NaN without truth.
     double nees = std::numeric_limits<double>::quiet_NaN();
 };
 

@@ -39,9 +39,10 @@ struct RefilterStep {
 
 struct RefilterResult {
     std::vector<RefilterStep> steps;
-    /// Metrics of each replay over the steps with a known truth (none for a real robot).
-    std::optional<RunMetrics> old_metrics;
-    std::optional<RunMetrics> new_metrics;
+    /// Metrics of each replay: the counts over every step, the errors and NEES
+    /// (RunMetrics::truth) over the steps with a recorded truth — none for a real robot.
+    RunMetrics old_metrics;
+    RunMetrics new_metrics;
     /// Largest |difference| between the old replay and the estimates / covariances stored in
     /// the log: 0 when the replay reproduces the recorded run exactly (it should).
     double old_replay_deviation = 0.0;

@@ -10,8 +10,9 @@ class QTableWidget;
 
 namespace legofeup::ui {
 
-/// Fills `table` (two columns: recorded settings, new settings). Without a truth (a real
-/// robot) both are unknown and the table says so.
+/// Fills `table` (two columns: recorded settings, new settings); empty cells before a
+/// re-filter (nullopt). The rows that need the truth say so in a log without one (a real
+/// robot); the counts are shown all the same.
 void show_refilter_metrics(QTableWidget& table, const std::optional<RunMetrics>& old_metrics,
                            const std::optional<RunMetrics>& new_metrics);
 
