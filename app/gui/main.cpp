@@ -16,6 +16,7 @@
 #include "legofeup/ui/session/session.hpp"
 #include "legofeup/ui/window/app_settings.hpp"
 #include "legofeup/ui/window/appearance.hpp"
+#include "legofeup/ui/window/at_run_time.hpp"
 #include "legofeup/ui/window/command_line.hpp"
 #include "legofeup/ui/window/connect_dialog.hpp"
 #include "legofeup/ui/window/display_check.hpp"
@@ -123,7 +124,7 @@ int main(int argc, char** argv) {
         dialog = window.openRefilter();
     }
     if (!options.screenshot.isEmpty()) {
-        QTimer::singleShot(static_cast<int>(options.screenshot_after * 1000), &window, [&] {
+        const auto take_picture = [&] {
             QWidget* shown = dialog ? dialog.data() : &window;
             const bool saved = shown->grab().save(options.screenshot);
             std::fprintf(stderr, "legofeup: %s %s\n", saved ? "saved" : "could not save",
@@ -131,7 +132,15 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "legofeup: frame times (mean/p99/max): %s\n",
                          qPrintable(window.frameTimesText()));
             QApplication::exit(saved ? 0 : 2);
-        });
+        };
+        if (options.screenshot_at) {
+            // After this turn of the event loop, so the views have drawn the sample reached.
+            ui::at_run_time(session, *options.screenshot_at,
+                            [&] { QTimer::singleShot(0, &window, take_picture); });
+        } else {
+            QTimer::singleShot(static_cast<int>(options.screenshot_after * 1000), &window,
+                               take_picture);
+        }
     }
     return QApplication::exec();
 }

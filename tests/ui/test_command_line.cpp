@@ -99,6 +99,15 @@ TEST(CommandLine, OtherNumbersChoicesAndWordsAreRefusedWithTheirReason) {
          "legofeup: --frame-log = 2.5: expected a whole number of seconds from 1 to 1000"},
         {{"--screenshot-after", "-1"},
          "legofeup: --screenshot-after = -1: expected a number of seconds from 0 to 1000"},
+        {{"--start", "--screenshot-at", "-1"},
+         "legofeup: --screenshot-at = -1: expected a run time in seconds from 0 to 86400"},
+        {{"--start", "--screenshot-at", "soon"},
+         "legofeup: --screenshot-at = soon: expected a run time in seconds from 0 to 86400"},
+        {{"--screenshot-at", "30"},
+         "legofeup: --screenshot-at needs --start: without a run, no run time is ever reached"},
+        {{"--start", "--screenshot-at", "30", "--screenshot-after", "5"},
+         "legofeup: --screenshot-at and --screenshot-after both say when to take the picture: "
+         "give one of them"},
         {{"--theme", "blue"}, "legofeup: --theme = blue: expected system, light or dark"},
         {{"--open-dialog", "x"},
          "legofeup: --open-dialog = x: expected connect, ir-calibration, umbmark or refilter"},
@@ -140,6 +149,16 @@ TEST(CommandLine, AWholeStartIsReadIntoItsOptions) {
     EXPECT_EQ(options.screenshot_after, 2.5);
     EXPECT_EQ(options.frame_log, 30);
     EXPECT_EQ(options.open_dialog, QStringLiteral("umbmark"));
+}
+
+TEST(CommandLine, APictureAtARunTimeIsReadWithoutAWait) {
+    EXPECT_FALSE(read({}).options.screenshot_at.has_value());
+    const CommandLine command_line = read(
+        {"--experiment", "laser:d", "--start", "--screenshot", "d.png", "--screenshot-at", "53.5"});
+    ASSERT_EQ(command_line.action, CommandLine::Action::Start) << text(command_line);
+    ASSERT_TRUE(command_line.options.screenshot_at.has_value());
+    EXPECT_EQ(*command_line.options.screenshot_at, 53.5);
+    EXPECT_EQ(*read({"--start", "--screenshot-at", "0"}).options.screenshot_at, 0.0);
 }
 
 QProcessEnvironment environment(std::initializer_list<std::pair<const char*, const char*>> set) {

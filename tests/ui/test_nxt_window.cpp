@@ -93,7 +93,6 @@ class NxtWindowTest : public QObject {
                  qPrintable(statusBarRobotLine()->text()));
         QVERIFY(session_->nxtQuality().has_value());
         QVERIFY(session_->nxtQuality()->rate_hz() > 5.0);
-        testing::save_screenshot(*window_, "nxt-rehearsal");
 
         window_->runToolBar().stopAction()->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(session_->phase(), RunPhase::Stopped, kPatienceMs);

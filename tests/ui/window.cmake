@@ -7,3 +7,5 @@ legofeup_add_ui_test(ui_nxt_window_test test_nxt_window.cpp)
 # legofeup's command line (read before any window) and the window it starts.
 legofeup_add_ui_gtest(ui_command_line_test test_command_line.cpp)
 legofeup_add_ui_test(ui_start_up_test test_start_up.cpp)
+# --screenshot-at's moment: the run time reached, or the run's end.
+legofeup_add_ui_test(ui_at_run_time_test test_at_run_time.cpp)

@@ -29,6 +29,8 @@ constexpr NumberRange kSpeedRange{
     QT_TR_NOOP("expected a number from %1 to %2 (simulated seconds per real second)")};
 constexpr NumberRange kScreenshotAfterRange{
     0.0, kLongestWait, false, QT_TR_NOOP("expected a number of seconds from %1 to %2")};
+constexpr NumberRange kScreenshotAtRange{
+    0.0, 86400.0, false, QT_TR_NOOP("expected a run time in seconds from %1 to %2")};
 constexpr NumberRange kFrameLogRange{
     1.0, kLongestWait, true, QT_TR_NOOP("expected a whole number of seconds from %1 to %2")};
 
@@ -114,6 +116,13 @@ CommandLine read_command_line(const QStringList& arguments) {
     const QCommandLineOption after(QStringLiteral("screenshot-after"),
                                    QObject::tr("Seconds before the screenshot (default 5)."),
                                    QStringLiteral("SECONDS"));
+    const QCommandLineOption at(
+        QStringLiteral("screenshot-at"),
+        QObject::tr("Take the picture when the run reaches SECONDS of run time (the status "
+                    "bar's t), or at its end if it ends sooner: the same moment of the run "
+                    "however busy the machine is. Needs --start; instead of "
+                    "--screenshot-after."),
+        QStringLiteral("SECONDS"));
     const QCommandLineOption frame_log(
         QStringLiteral("frame-log"),
         QObject::tr("Log the frame-time statistics every SECONDS to the standard error."),
@@ -124,7 +133,7 @@ CommandLine read_command_line(const QStringList& arguments) {
                     "--screenshot, the picture is of the dialog)."),
         QStringLiteral("NAME"));
     parser.addOptions({help, version, experiment, config, theme, large, start, speed, screenshot,
-                       after, frame_log, open_dialog});
+                       after, at, frame_log, open_dialog});
 
     const bool parsed = parser.parse(arguments);
     // Help and version whatever else is wrong: they are what a lost user types.
@@ -175,15 +184,26 @@ CommandLine read_command_line(const QStringList& arguments) {
         return refused(open_dialog, options.open_dialog,
                        QObject::tr("expected connect, ir-calibration, umbmark or refilter"));
     }
+    if (parser.isSet(at) && parser.isSet(after)) {
+        return refused(
+            QObject::tr("--screenshot-at and --screenshot-after both say when to take "
+                        "the picture: give one of them"));
+    }
+    if (parser.isSet(at) && !parser.isSet(start)) {
+        return refused(QObject::tr(
+            "--screenshot-at needs --start: without a run, no run time is ever reached"));
+    }
     struct NumberOption {
         const QCommandLineOption* option;
         const NumberRange* range;
         double* value;
     };
     double frame_log_seconds = 0.0;
+    double screenshot_at = 0.0;
     for (const NumberOption& number :
          {NumberOption{&speed, &kSpeedRange, &options.speed},
           NumberOption{&after, &kScreenshotAfterRange, &options.screenshot_after},
+          NumberOption{&at, &kScreenshotAtRange, &screenshot_at},
           NumberOption{&frame_log, &kFrameLogRange, &frame_log_seconds}}) {
         if (!parser.isSet(*number.option)) {
             continue;
@@ -198,6 +218,9 @@ CommandLine read_command_line(const QStringList& arguments) {
         *number.value = *value;
     }
     options.frame_log = static_cast<int>(frame_log_seconds);
+    if (parser.isSet(at)) {
+        options.screenshot_at = screenshot_at;
+    }
     return command_line;
 }
 

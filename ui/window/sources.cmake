@@ -4,6 +4,7 @@
 list(APPEND LEGOFEUP_UI_SOURCES
     window/app_settings.cpp
     window/appearance.cpp
+    window/at_run_time.cpp
     window/bluetooth_scan.cpp
     window/command_line.cpp
     window/connect_dialog.cpp

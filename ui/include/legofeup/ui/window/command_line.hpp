@@ -6,6 +6,7 @@
 #include <QString>
 #include <QStringList>
 #include <cstdint>
+#include <optional>
 
 namespace legofeup::ui {
 
@@ -19,8 +20,11 @@ struct StartOptions {
     double speed = 0.0;             ///< --speed (is_simulator_speed); 0: the one saved
     QString screenshot;             ///< --screenshot: the picture's file; empty: none
     double screenshot_after = 5.0;  ///< seconds
-    int frame_log = 0;              ///< --frame-log: seconds between logs; 0: none
-    QString open_dialog;            ///< connect, ir-calibration, umbmark, refilter; empty: none
+    /// --screenshot-at: the run time (s, the status bar's t) to take the picture at, instead
+    /// of after screenshot_after seconds; nullopt: none.
+    std::optional<double> screenshot_at;
+    int frame_log = 0;    ///< --frame-log: seconds between logs; 0: none
+    QString open_dialog;  ///< connect, ir-calibration, umbmark, refilter; empty: none
 };
 
 struct CommandLine {
