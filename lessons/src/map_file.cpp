@@ -435,7 +435,7 @@ std::optional<std::string> read_from_disk(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path, error)) {
         return std::nullopt;
     }
-    return read_text_file(path, "map image");
+    return read_text_file(path, kMapImageFile);
 }
 
 std::optional<std::string> read_built_in(const std::filesystem::path& path) {
@@ -534,7 +534,7 @@ OccupancyGrid occupancy_from_image(const MapMetadata& map, const GreyImage& imag
 }
 
 OccupancyGrid load_map_file(const std::filesystem::path& yaml) {
-    return read_map(read_text_file(yaml, "map"), yaml, yaml.string(), read_from_disk);
+    return read_map(read_text_file(yaml, kMapFile), yaml, yaml.string(), read_from_disk);
 }
 
 const std::vector<std::string>& built_in_map_names() {
