@@ -66,4 +66,13 @@ std::string read_text_file(const std::filesystem::path& path, const TextFileKind
     return text;
 }
 
+FilePrefix read_file_prefix(const std::filesystem::path& path, const TextFileKind& kind,
+                            std::size_t max_bytes) {
+    std::ifstream file = open_file(path, kind);
+    FilePrefix prefix;
+    read_up_to(file, prefix.bytes, max_bytes);
+    prefix.whole_file = file.peek() == std::ifstream::traits_type::eof();
+    return prefix;
+}
+
 }  // namespace legofeup::lessons

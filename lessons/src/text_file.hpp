@@ -31,8 +31,8 @@ inline constexpr TextFileKind kMeasurementsFile{"measurements", 16 * kMiB};
 inline constexpr TextFileKind kRunLogFile{"run log", 1024 * kMiB};
 /// A Monte Carlo shard holds one record per run and the per-step sums: tens of MB.
 inline constexpr TextFileKind kShardFile{"shard", 256 * kMiB};
-/// A map image: a plain (P2) 4096 × 4096 image of five-digit values and their blanks is
-/// 96 MiB.
+/// A map image, read once its header has accepted its size (pgm_image.cpp): a plain (P2)
+/// 4096 × 4096 image of five-digit values and their blanks is 96 MiB.
 inline constexpr TextFileKind kMapImageFile{"map image", 128 * kMiB};
 
 /// The whole of a text file. InputError naming the file: "cannot open the <kind> file" if it
@@ -40,5 +40,14 @@ inline constexpr TextFileKind kMapImageFile{"map image", 128 * kMiB};
 /// at most M MiB (B bytes)" when it is larger than kind.max_bytes (a regular file's size is
 /// checked before anything is read; a pipe is read up to the limit).
 std::string read_text_file(const std::filesystem::path& path, const TextFileKind& kind);
+
+/// At most the first `max_bytes` bytes of a file (a header to check before the rest is
+/// read); InputError as read_text_file if it cannot be read.
+struct FilePrefix {
+    std::string bytes;
+    bool whole_file = false;  ///< the file ends within `bytes`
+};
+FilePrefix read_file_prefix(const std::filesystem::path& path, const TextFileKind& kind,
+                            std::size_t max_bytes);
 
 }  // namespace legofeup::lessons
