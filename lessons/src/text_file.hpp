@@ -27,7 +27,7 @@ inline constexpr TextFileKind kWorldFile{"world", 16 * kMiB};
 inline constexpr TextFileKind kRobotProfileFile{"robot profile", 16 * kMiB};
 inline constexpr TextFileKind kMapFile{"map", 16 * kMiB};
 inline constexpr TextFileKind kMeasurementsFile{"measurements", 16 * kMiB};
-/// An hour at 20 steps a second with a 360-beam laser scan is about 300 MB.
+/// An hour at 20 steps a second with the laser scan is about 150 MB (2 KB a record).
 inline constexpr TextFileKind kRunLogFile{"run log", 1024 * kMiB};
 /// A Monte Carlo shard holds one record per run and the per-step sums: tens of MB.
 inline constexpr TextFileKind kShardFile{"shard", 256 * kMiB};
