@@ -237,7 +237,7 @@ void apply_config_toml(std::string_view text, const std::string& source, RunConf
 
 RunConfig load_config_file(const std::filesystem::path& path, const RunConfig& base) {
     RunConfig config = base;
-    apply_config_toml(read_text_file(path, "configuration"), path.string(), config,
+    apply_config_toml(read_text_file(path, kConfigurationFile), path.string(), config,
                       path.parent_path());
     return config;
 }

@@ -28,6 +28,7 @@ Setting bound(std::string key, std::string field, std::string help, SettingType 
         if constexpr (std::is_same_v<T, double>) {
             return access(c) / scale;
         } else {
+            static_cast<void>(scale);  // only real values are scaled
             return access(c);
         }
     };
@@ -35,6 +36,7 @@ Setting bound(std::string key, std::string field, std::string help, SettingType 
         if constexpr (std::is_same_v<T, double>) {
             access(c) = std::get<double>(v) * scale;
         } else {
+            static_cast<void>(scale);
             access(c) = std::get<T>(v);
         }
     };

@@ -249,7 +249,7 @@ Lesson parse_lesson(std::string_view text, const std::string& source,
 }
 
 Lesson load_lesson_file(const std::filesystem::path& path) {
-    return parse_lesson(read_text_file(path, "lesson"), path.string(), path.parent_path());
+    return parse_lesson(read_text_file(path, kLessonFile), path.string(), path.parent_path());
 }
 
 }  // namespace legofeup::lessons

@@ -20,7 +20,6 @@ namespace {
 
 constexpr double kMaxResolution = 10.0;   // m per pixel: anything coarser is a typo
 constexpr double kMaxOriginOffset = 1e6;  // m
-constexpr int kMaxPgmValue = 65535;       // the largest maxval PGM allows
 
 // --- The YAML file --------------------------------------------------------------------------
 
@@ -244,220 +243,43 @@ class MapYamlReader {
     std::vector<InputProblem> problems_;
 };
 
-// --- The PGM image --------------------------------------------------------------------------
-
-bool is_space(char ch) {
-    return ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r' || ch == '\v' || ch == '\f';
-}
-
-bool is_digit(char ch) {
-    return ch >= '0' && ch <= '9';
-}
-
-/// Walks the text part of a PGM (the header, and the whole of a plain P2 file), counting
-/// lines; comments run from '#' to the end of the line.
-class PgmText {
-  public:
-    PgmText(std::string_view bytes, std::string source)
-        : bytes_(bytes), source_(std::move(source)) {}
-
-    void skip_space_and_comments() {
-        while (position_ < bytes_.size()) {
-            const char ch = bytes_[position_];
-            if (ch == '#') {
-                while (position_ < bytes_.size() && bytes_[position_] != '\n') {
-                    ++position_;
-                }
-            } else if (is_space(ch)) {
-                line_ += ch == '\n' ? 1 : 0;
-                ++position_;
-            } else {
-                return;
-            }
-        }
-    }
-
-    /// The next whole number, or nullopt (and nothing consumed) when there is none.
-    std::optional<long> number() {
-        std::size_t end = position_;
-        long value = 0;
-        while (end < bytes_.size() && is_digit(bytes_[end])) {
-            value = std::min(value * 10 + (bytes_[end] - '0'), 1'000'000'000L);
-            ++end;
-        }
-        if (end == position_
-            || (end < bytes_.size() && !is_space(bytes_[end]) && bytes_[end] != '#')) {
-            return std::nullopt;
-        }
-        position_ = end;
-        return value;
-    }
-
-    /// What stands at the current position, for messages.
-    std::string next_word() const {
-        std::size_t end = position_;
-        while (end < bytes_.size() && !is_space(bytes_[end]) && end - position_ < 12) {
-            ++end;
-        }
-        if (end == position_) {
-            return position_ >= bytes_.size() ? "the end of the file" : "a blank";
-        }
-        std::string word(bytes_.substr(position_, end - position_));
-        for (char& ch : word) {
-            const auto code = static_cast<unsigned char>(ch);
-            if (code < 0x20 || code >= 0x7f) {
-                ch = '?';
-            }
-        }
-        return "\"" + word + "\"";
-    }
-
-    [[noreturn]] void fail_header(const std::string& reason) const {
-        throw InputError({{source_, line_, "PGM header", "", reason}});
-    }
-
-    bool at_end() const { return position_ >= bytes_.size(); }
-    char peek() const { return bytes_[position_]; }
-    void advance(std::size_t count) {
-        for (std::size_t i = 0; i < count && position_ < bytes_.size(); ++i) {
-            line_ += bytes_[position_] == '\n' ? 1 : 0;
-            ++position_;
-        }
-    }
-    std::size_t position() const { return position_; }
-    int line() const { return line_; }
-    const std::string& source() const { return source_; }
-
-  private:
-    std::string_view bytes_;
-    std::string source_;
-    std::size_t position_ = 0;
-    int line_ = 1;
-};
-
-int header_number(PgmText& text, const char* what, long low, long high) {
-    text.skip_space_and_comments();
-    const std::string found = text.next_word();
-    const auto value = text.number();
-    if (!value) {
-        text.fail_header(std::string("expected the ") + what + " (a whole number), found " + found);
-    }
-    if (*value < low || *value > high) {
-        text.fail_header(std::string("the ") + what + " " + std::to_string(*value)
-                         + " must be between " + std::to_string(low) + " and "
-                         + std::to_string(high));
-    }
-    return static_cast<int>(*value);
-}
-
-std::string pixel_name(const GreyImage& image, std::size_t index) {
-    const auto width = static_cast<std::size_t>(image.width);
-    return "pixel (column " + std::to_string(index % width) + ", row "
-           + std::to_string(index / width) + ")";
-}
-
-std::string pixel_count_text(const GreyImage& image) {
-    return std::to_string(image.width) + "×" + std::to_string(image.height) + " = "
-           + std::to_string(static_cast<std::size_t>(image.width)
-                            * static_cast<std::size_t>(image.height))
-           + " pixels";
-}
-
-// P5: after maxval one whitespace byte, then width·height samples of 1 byte (maxval < 256)
-// or 2 bytes, most significant first.
-void read_binary_raster(std::string_view bytes, PgmText& text, GreyImage& image) {
-    if (text.at_end() || !is_space(text.peek())) {
-        text.fail_header("a single blank must follow the maxval, then the pixels");
-    }
-    text.advance(1);
-    const std::size_t sample_size = image.max_value < 256 ? 1 : 2;
-    const std::size_t available = bytes.size() - text.position();
-    const std::size_t expected = image.pixels.size();
-    if (available != expected * sample_size) {
-        const std::string found = std::to_string(available / sample_size)
-                                  + (available % sample_size != 0 ? " and a half" : "");
-        throw InputError({{text.source(), 0, "", "",
-                           "expected " + pixel_count_text(image) + " ("
-                               + std::to_string(sample_size * 8) + "-bit), found " + found}});
-    }
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data() + text.position());
-    for (std::size_t i = 0; i < expected; ++i) {
-        const unsigned value =
-            sample_size == 1 ? data[i] : (unsigned{data[2 * i]} << 8U) | data[2 * i + 1];
-        if (value > static_cast<unsigned>(image.max_value)) {
-            throw InputError({{text.source(), 0, pixel_name(image, i), std::to_string(value),
-                               "above the maxval " + std::to_string(image.max_value)}});
-        }
-        image.pixels[i] = static_cast<std::uint16_t>(value);
-    }
-}
-
-// P2: width·height decimal numbers separated by blanks (comments allowed).
-void read_plain_raster(PgmText& text, GreyImage& image) {
-    const std::size_t expected = image.pixels.size();
-    std::size_t count = 0;
-    while (true) {
-        text.skip_space_and_comments();
-        if (text.at_end()) {
-            break;
-        }
-        const std::string found = text.next_word();
-        const auto value = text.number();
-        if (!value) {
-            throw InputError({{text.source(), text.line(),
-                               count < expected ? pixel_name(image, count) : "after the pixels",
-                               found, "not a whole number"}});
-        }
-        if (count < expected) {
-            if (*value > image.max_value) {
-                throw InputError(
-                    {{text.source(), text.line(), pixel_name(image, count), std::to_string(*value),
-                      "above the maxval " + std::to_string(image.max_value)}});
-            }
-            image.pixels[count] = static_cast<std::uint16_t>(*value);
-        }
-        ++count;
-    }
-    if (count != expected) {
-        throw InputError(
-            {{text.source(), 0, "", "",
-              "expected " + pixel_count_text(image) + ", found " + std::to_string(count)}});
-    }
-}
-
 // --- Reading a map from files or from the built-in resources --------------------------------
 
-/// Reads a file's bytes, or nullopt when it does not exist (disk or built-in resources).
-using FileSource = std::function<std::optional<std::string>(const std::filesystem::path&)>;
+/// Reads the image at a path, or nullopt when there is none (on disk or among the built-in
+/// resources); `source` names it in messages.
+using ImageSource = std::function<std::optional<GreyImage>(const std::filesystem::path& path,
+                                                           const std::string& source)>;
 
-std::optional<std::string> read_from_disk(const std::filesystem::path& path) {
+// On disk, the image's path is its source in messages.
+std::optional<GreyImage> read_from_disk(const std::filesystem::path& path, const std::string&) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error)) {
         return std::nullopt;
     }
-    return read_text_file(path, "map image");
+    return read_pgm_file(path);  // the header first: a huge image is refused unread
 }
 
-std::optional<std::string> read_built_in(const std::filesystem::path& path) {
+std::optional<GreyImage> read_built_in(const std::filesystem::path& path,
+                                       const std::string& source) {
     const auto contents = built_in_resource(path.lexically_normal().generic_string());
-    return contents ? std::optional<std::string>(*contents) : std::nullopt;
+    return contents ? std::optional<GreyImage>(parse_pgm(*contents, source)) : std::nullopt;
 }
 
 OccupancyGrid read_map(std::string_view yaml_text, const std::filesystem::path& yaml_path,
-                       const std::string& yaml_source, const FileSource& files) {
+                       const std::string& yaml_source, const ImageSource& images) {
     const MapMetadata map = parse_map_yaml(yaml_text, yaml_source);
     const std::filesystem::path image_path =
         map.image.is_absolute() ? map.image : yaml_path.parent_path() / map.image;
-    const std::optional<std::string> bytes = files(image_path);
-    if (!bytes) {
-        throw InputError({{yaml_source, map.image_line, "image", map.image.string(),
-                           "cannot read the image " + image_path.lexically_normal().string()}});
-    }
     const std::string image_source =
         yaml_source.ends_with(" (built in)")
             ? image_path.lexically_normal().generic_string() + " (built in)"
             : image_path.string();
-    return occupancy_from_image(map, parse_pgm(*bytes, image_source));
+    const std::optional<GreyImage> image = images(image_path, image_source);
+    if (!image) {
+        throw InputError({{yaml_source, map.image_line, "image", map.image.string(),
+                           "cannot read the image " + image_path.lexically_normal().string()}});
+    }
+    return occupancy_from_image(map, *image);
 }
 
 }  // namespace
@@ -476,36 +298,6 @@ MapMetadata parse_map_yaml(std::string_view text, const std::string& source) {
         throw InputError(reader.problems());
     }
     return map;
-}
-
-GreyImage parse_pgm(std::string_view bytes, const std::string& source) {
-    PgmText text(bytes, source);
-    const std::string magic(bytes.substr(0, 2));
-    if (magic != "P5" && magic != "P2") {
-        const bool other_netpbm =
-            magic.size() == 2 && magic[0] == 'P' && magic[1] >= '1' && magic[1] <= '7';
-        text.fail_header(other_netpbm
-                             ? "this is a Netpbm " + magic
-                                   + " image; a map is a greyscale PGM (P5 binary or P2 plain)"
-                             : "not a PGM image: the file must start with P5 (binary) or P2 "
-                               "(plain)");
-    }
-    text.advance(2);
-    if (text.at_end() || (!is_space(text.peek()) && text.peek() != '#')) {
-        text.fail_header("a blank must follow " + magic);
-    }
-    GreyImage image;
-    image.width = header_number(text, "width", 1, kMaxMapImageSide);
-    image.height = header_number(text, "height", 1, kMaxMapImageSide);
-    image.max_value = header_number(text, "maxval", 1, kMaxPgmValue);
-    image.pixels.assign(
-        static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height), 0);
-    if (magic == "P5") {
-        read_binary_raster(bytes, text, image);
-    } else {
-        read_plain_raster(text, image);
-    }
-    return image;
 }
 
 CellState cell_state_of(const MapMetadata& map, int max_value, int value) {
@@ -534,7 +326,7 @@ OccupancyGrid occupancy_from_image(const MapMetadata& map, const GreyImage& imag
 }
 
 OccupancyGrid load_map_file(const std::filesystem::path& yaml) {
-    return read_map(read_text_file(yaml, "map"), yaml, yaml.string(), read_from_disk);
+    return read_map(read_text_file(yaml, kMapFile), yaml, yaml.string(), read_from_disk);
 }
 
 const std::vector<std::string>& built_in_map_names() {

@@ -332,7 +332,7 @@ RobotProfile parse_robot_profile(std::string_view text, const std::string& sourc
 }
 
 RobotProfile load_robot_profile(const std::string& path) {
-    return parse_robot_profile(read_text_file(path, "robot profile"), path);
+    return parse_robot_profile(read_text_file(path, kRobotProfileFile), path);
 }
 
 std::string robot_profile_to_toml(const RobotProfile& profile) {

@@ -157,7 +157,7 @@ Submission parse_submission(std::string_view text, const std::string& source,
 }
 
 Submission load_submission_file(const std::filesystem::path& path, const Lesson& lesson) {
-    return parse_submission(read_text_file(path, "submission"), path.string(), lesson);
+    return parse_submission(read_text_file(path, kSubmissionFile), path.string(), lesson);
 }
 
 }  // namespace legofeup::lessons

@@ -389,7 +389,7 @@ sim::WorldSpec parse_world(std::string_view text, const std::string& source,
 }
 
 sim::WorldSpec load_world_file(const std::filesystem::path& path) {
-    return parse_world(read_text_file(path, "world"), path.string(), path.parent_path());
+    return parse_world(read_text_file(path, kWorldFile), path.string(), path.parent_path());
 }
 
 const std::vector<std::string>& built_in_world_names() {

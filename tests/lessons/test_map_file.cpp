@@ -313,9 +313,14 @@ TEST(MapFile, PgmHeaderProblemsNameTheHeaderAndItsLine) {
     EXPECT_EQ(problem.reason, "expected the width (a whole number), found \"wide\"");
     problem = image_problem("P5\n4097 1\n255\n");
     EXPECT_EQ(problem.line, 2);
-    EXPECT_EQ(problem.reason, "the width 4097 must be between 1 and 4096");
-    problem = image_problem("P5\n1 5000\n255\n");
-    EXPECT_EQ(problem.reason, "the height 5000 must be between 1 and 4096");
+    EXPECT_EQ(problem.reason,
+              "the image is 4097×1 pixels, larger than a map image may be (at most 4096×4096)");
+    problem = image_problem("P5\n1\n5000\n255\n");
+    EXPECT_EQ(problem.line, 3);
+    EXPECT_EQ(problem.reason,
+              "the image is 1×5000 pixels, larger than a map image may be (at most 4096×4096)");
+    problem = image_problem("P5\n4096 0\n255\n");
+    EXPECT_EQ(problem.reason, "the height 0 must be at least 1");
     problem = image_problem("P5\n1 1\n0\n");
     EXPECT_EQ(problem.reason, "the maxval 0 must be between 1 and 65535");
     problem = image_problem("P5\n1 1\n");
@@ -323,6 +328,68 @@ TEST(MapFile, PgmHeaderProblemsNameTheHeaderAndItsLine) {
     const std::string message = map_error_of([] { load(yaml_text(), "P5\n\n\nx 1\n255\n"); });
     EXPECT_NE(message.find("map.pgm:4: PGM header: expected the width"), std::string::npos)
         << message;
+}
+
+// A 20000 × 20000 image is 400 MB of pixels (800 MB as the reader's 16-bit buffer): its
+// size must be refused from the header, before the pixels are counted, allocated or read.
+TEST(MapFile, AnImageTooLargeIsRefusedFromItsHeaderAlone) {
+    const std::string too_large =
+        "the image is 20000×20000 pixels, larger than a map image may be (at most 4096×4096)";
+    // No pixels at all: had they been counted first, this would be "expected 20000×20000 =
+    // 400000000 pixels (8-bit), found 0".
+    EXPECT_EQ(message_of([] { parse_pgm("P5\n20000 20000\n255\n", "big.pgm"); }),
+              "big.pgm:2: PGM header: " + too_large);
+    EXPECT_EQ(message_of([] { parse_pgm("P2\n# plain\n20000\n20000\n255\n", "big.pgm"); }),
+              "big.pgm:4: PGM header: " + too_large);
+    // Digits beyond any int are named as written.
+    EXPECT_NE(message_of([] {
+                  parse_pgm("P5 123456789012345 1 255\n", "x.pgm");
+              }).find("the image is 123456789012345×1 pixels"),
+              std::string::npos);
+
+    // On disk, with all its 400 000 000 bytes of pixels (a sparse file: it takes no space).
+    // Read whole it would be refused by its file size (above the 128 MiB a map image may
+    // be) after reading it; read header first, its width × height are named.
+    const fs::path dir = temp_dir();
+    write_file(dir / "map.yaml", yaml_text());
+    const std::string header = "P5\n20000 20000\n255\n";
+    write_file(dir / "map.pgm", header);
+    fs::resize_file(dir / "map.pgm", header.size() + 20000ULL * 20000ULL);
+    const std::vector<InputProblem> problems =
+        problems_of([&] { load_map_file(dir / "map.yaml"); });
+    ASSERT_EQ(problems.size(), 1U);
+    EXPECT_EQ(problems[0].message(), (dir / "map.pgm").string() + ":2: PGM header: " + too_large);
+    fs::remove(dir / "map.pgm");  // sparse, but it looks like 400 MB to anyone listing /tmp
+}
+
+// The header is read from the file's first 64 KiB; one that goes on beyond them is refused,
+// even when what follows would complete it: a number cut by the window's end is not read
+// as a shorter one.
+TEST(MapFile, AFileHeaderMustEndWithinItsFirst64KiB) {
+    constexpr std::size_t kWindow = 64 * 1024;
+    const std::string too_long =
+        "PGM header: does not end within the file's first 65536 bytes (a header is the magic "
+        "number, width, height and maxval, with their comments)";
+    // A comment longer than the window.
+    const std::string long_comment = "P5\n#" + std::string(kWindow, 'c') + "\n1 1\n255\n";
+    EXPECT_NE(message_of([&] {
+                  load(yaml_text(), long_comment + std::string(1, '\0'));
+              }).find("map.pgm:2: " + too_long),
+              std::string::npos);
+    // The maxval's digits "25" end the window and "5" follows: not read as 25.
+    std::string cut = "P5\n1 1\n#";
+    cut += std::string(kWindow - cut.size() - 3, 'c') + "\n25";
+    ASSERT_EQ(cut.size(), kWindow);
+    EXPECT_NE(message_of([&] {
+                  load(yaml_text(), cut + "5\n" + std::string(1, '\x80'));
+              }).find("map.pgm:4: " + too_long),
+              std::string::npos);
+    // Within the window, a header of long comments and an image beyond it read whole.
+    std::string fits = "P5\n#" + std::string(kWindow - 100, 'c') + "\n300 300\n255\n";
+    fits += std::string(300 * 300, '\0');
+    const OccupancyGrid grid = load(yaml_text(), fits);
+    EXPECT_EQ(grid.width(), 300);
+    EXPECT_TRUE(grid.occupied({299, 299}));
 }
 
 TEST(MapFile, TooFewOrTooManyPixelsAreCounted) {

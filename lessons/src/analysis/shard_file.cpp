@@ -181,7 +181,7 @@ ShardFile parse_shard_file(const std::string& text, const std::string& source) {
 }
 
 ShardFile read_shard_file(const std::filesystem::path& path) {
-    return parse_shard_file(read_text_file(path, "shard"), path.string());
+    return parse_shard_file(read_text_file(path, kShardFile), path.string());
 }
 
 MergedBatch merge_shards(const std::vector<ShardFile>& shards) {

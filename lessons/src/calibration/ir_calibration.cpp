@@ -3,9 +3,9 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <set>
 
+#include "../text_file.hpp"
 #include "legofeup/core/config_issue.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "text_fields.hpp"
@@ -75,10 +75,11 @@ void check_inputs(std::span<const IrCalibrationPoint> points, const SharpIrCurve
         problem("points", "",
                 "every measurement has the same A/D value (A = " + number_text(*distinct.begin())
                     + "): measure at several distances across the range");
-    } else if (distinct.size() == 2) {
+    } else if (distinct.size() > 1 && distinct.size() < static_cast<std::size_t>(kMinDistinctAdc)) {
         problem("points", "",
-                "only 2 different A/D values: C_M, C_R and b need at least 3 (measure at more "
-                "distances)");
+                "only " + std::to_string(distinct.size())
+                    + " different A/D values: C_M, C_R and b need at least "
+                    + std::to_string(kMinDistinctAdc) + " (measure at more distances)");
     }
     const Parameters p = parameters_of(start);
     if (!p.allFinite() || !std::isfinite(start.a) || !(start.a > 0.0)) {
@@ -228,20 +229,24 @@ IrFit fit_ir_curve(std::span<const IrCalibrationPoint> points, const SharpIrCurv
 }
 
 std::vector<IrCalibrationPoint> read_ir_points_csv(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        throw InputError({{path, 0, "", "", "cannot open the measurements file"}});
-    }
+    return parse_ir_points_csv(read_text_file(path, kMeasurementsFile), path);
+}
+
+std::vector<IrCalibrationPoint> parse_ir_points_csv(std::string_view text,
+                                                    const std::string& source) {
     std::vector<InputProblem> problems;
     std::vector<IrCalibrationPoint> points;
     const auto problem = [&](int line, std::string key, std::string_view value,
                              std::string reason) {
-        problems.push_back({path, line, std::move(key), std::string(value), std::move(reason)});
+        problems.push_back({source, line, std::move(key), std::string(value), std::move(reason)});
     };
     bool header_seen = false;
-    std::string text;
-    for (int line = 1; std::getline(file, text); ++line) {
-        const std::string_view content = trimmed(std::string_view(text).substr(0, text.find('#')));
+    std::size_t next = 0;  // where the next line starts
+    for (int line = 1; next < text.size(); ++line) {
+        const std::size_t end = std::min(text.find('\n', next), text.size());
+        const std::string_view row = text.substr(next, end - next);
+        next = end + 1;
+        const std::string_view content = trimmed(row.substr(0, row.find('#')));
         if (content.empty()) {
             continue;
         }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace legofeup::lessons {
 namespace {
@@ -13,7 +14,7 @@ double deviation(const RunLogRecord& record, const LoopSnapshot& snapshot) {
     const auto compare = [&](double recorded, double replayed) {
         if (std::isnan(recorded) || std::isnan(replayed)) {
             if (std::isnan(recorded) != std::isnan(replayed)) {
-                largest = INFINITY;
+                largest = std::numeric_limits<double>::infinity();
             }
             return;
         }

@@ -442,7 +442,11 @@ const char* run_log_columns() {
 }
 
 RunLog load_run_log(const std::filesystem::path& path) {
-    LineReader reader(read_text_file(path, "run log"), path.string());
+    return parse_run_log(read_text_file(path, kRunLogFile), path.string());
+}
+
+RunLog parse_run_log(std::string text, const std::string& source) {
+    LineReader reader(std::move(text), source);
 
     RunLog log;
     read_version(reader, log.header);

@@ -11,7 +11,8 @@
 //   mode: trinary              # optional; "scale" reads the same, "raw" is refused
 //
 // The image's first row is the top of the map; OccupancyGrid's row 0 is the bottom, so rows
-// are flipped on reading. docs/maps.md describes the format and the maps that ship.
+// are flipped on reading (the image itself is read by pgm_image.hpp). docs/maps.md
+// describes the format and the maps that ship.
 
 #include <cstdint>
 #include <filesystem>
@@ -21,11 +22,9 @@
 #include <vector>
 
 #include "legofeup/core/occupancy_grid.hpp"
+#include "legofeup/lessons/pgm_image.hpp"
 
 namespace legofeup::lessons {
-
-/// Images may be at most this many pixels wide and high.
-inline constexpr int kMaxMapImageSide = 4096;
 
 /// How pixel values become cell states (ROS map_server's `mode`).
 enum class MapMode : std::uint8_t {
@@ -45,26 +44,8 @@ struct MapMetadata {
     MapMode mode = MapMode::Trinary;
 };
 
-/// A grey image as stored: row 0 is the top row, values 0 … max_value.
-struct GreyImage {
-    int width = 0;
-    int height = 0;
-    int max_value = 255;
-    std::vector<std::uint16_t> pixels;  ///< row-major, width·height values
-
-    std::uint16_t at(int column, int row) const {
-        return pixels[static_cast<std::size_t>(row) * static_cast<std::size_t>(width)
-                      + static_cast<std::size_t>(column)];
-    }
-};
-
 /// Parses the YAML text; throws InputError naming every problem with its line and field.
 MapMetadata parse_map_yaml(std::string_view text, const std::string& source);
-
-/// Parses a PGM image, binary (P5, 8 or 16 bits per pixel) or plain (P2), with comments in
-/// the header; throws InputError ("<source>:<line>: PGM header: …", "<source>: expected …
-/// pixels, found …") on anything malformed or larger than kMaxMapImageSide.
-GreyImage parse_pgm(std::string_view bytes, const std::string& source);
 
 /// The state of one pixel: occupancy p = (max − v)/max, or v/max when negated; occupied
 /// when p > occupied_thresh, free when p < free_thresh, unknown otherwise.

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "legofeup/core/sharp_ir.hpp"
@@ -47,5 +48,8 @@ IrFit fit_ir_curve(std::span<const IrCalibrationPoint> points, const SharpIrCurv
 /// line (D in metres); blank lines and everything after `#` are ignored. Throws InputError
 /// with path:line, the column, the value and the reason for every bad line.
 std::vector<IrCalibrationPoint> read_ir_points_csv(const std::string& path);
+/// Parses measurements from text as read_ir_points_csv does; `source` names it in messages.
+std::vector<IrCalibrationPoint> parse_ir_points_csv(std::string_view text,
+                                                    const std::string& source);
 
 }  // namespace legofeup::lessons

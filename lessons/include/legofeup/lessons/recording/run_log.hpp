@@ -135,6 +135,10 @@ class RunLogWriter final : public RunObserver {
 /// last line cut off mid-write (no final newline) is tolerated: see RunLog::truncated.
 RunLog load_run_log(const std::filesystem::path& path);
 
+/// Parses a run log's text; `source` names it in messages (its directory anchors the
+/// configuration block's relative paths, as the file's does).
+RunLog parse_run_log(std::string text, const std::string& source);
+
 /// The column names of a record line of the version written, comma-separated (documented
 /// in docs/recording.md).
 const char* run_log_columns();
