@@ -14,6 +14,7 @@
 
 #include "csv_test_support.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/link_run.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/run_config.hpp"
 
@@ -126,5 +127,30 @@ inline fs::path record_frames(const std::string& name, const std::string& descri
     write_text(path, joined(kept));
     return path;
 }
+
+/// Keeps what the live loop computed at every step, to compare against the log and replays.
+class SnapshotKeeper final : public RunObserver {
+  public:
+    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
+        snapshots.push_back(snapshot);
+        truths.push_back(truth.pose);
+    }
+    std::vector<LoopSnapshot> snapshots;
+    std::vector<Pose2> truths;
+};
+
+/// Passes every step to two observers.
+class Both final : public RunObserver {
+  public:
+    Both(RunObserver& a, RunObserver& b) : a_(a), b_(b) {}
+    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
+        a_.on_step(snapshot, truth);
+        b_.on_step(snapshot, truth);
+    }
+
+  private:
+    RunObserver& a_;
+    RunObserver& b_;
+};
 
 }  // namespace legofeup::lessons::run_log_testing

@@ -45,7 +45,9 @@ TEST(EncoderResolutionRuns, ExperimentFLocalisesAsWellAt180And720CountsAsAt360) 
     std::array<Errors, kResolutions.size()> errors{};
     for (std::size_t r = 0; r < kResolutions.size(); ++r) {
         for (std::size_t i = 0; i < kResolutionSeeds; ++i) {
-            const RunMetrics& m = results[r * kResolutionSeeds + i].metrics;
+            const RunMetrics& metrics = results[r * kResolutionSeeds + i].metrics;
+            ASSERT_TRUE(metrics.truth.has_value()) << "a lockstep run always has the truth";
+            const TruthMetrics& m = *metrics.truth;
             EXPECT_LT(m.rms_position_error, 0.06)
                 << kResolutions[r] << " counts a turn, seed " << kResolutionFirstSeed + i;
             errors[r].mean_rms += m.rms_position_error / static_cast<double>(kResolutionSeeds);

@@ -337,12 +337,12 @@ TEST(MapFile, AnImageTooLargeIsRefusedFromItsHeaderAlone) {
         "the image is 20000×20000 pixels, larger than a map image may be (at most 4096×4096)";
     // No pixels at all: had they been counted first, this would be "expected 20000×20000 =
     // 400000000 pixels (8-bit), found 0".
-    EXPECT_EQ(message_of([] { parse_pgm("P5\n20000 20000\n255\n", "big.pgm"); }),
+    EXPECT_EQ(map_error_of([] { parse_pgm("P5\n20000 20000\n255\n", "big.pgm"); }),
               "big.pgm:2: PGM header: " + too_large);
-    EXPECT_EQ(message_of([] { parse_pgm("P2\n# plain\n20000\n20000\n255\n", "big.pgm"); }),
+    EXPECT_EQ(map_error_of([] { parse_pgm("P2\n# plain\n20000\n20000\n255\n", "big.pgm"); }),
               "big.pgm:4: PGM header: " + too_large);
     // Digits beyond any int are named as written.
-    EXPECT_NE(message_of([] {
+    EXPECT_NE(map_error_of([] {
                   parse_pgm("P5 123456789012345 1 255\n", "x.pgm");
               }).find("the image is 123456789012345×1 pixels"),
               std::string::npos);
@@ -356,7 +356,7 @@ TEST(MapFile, AnImageTooLargeIsRefusedFromItsHeaderAlone) {
     write_file(dir / "map.pgm", header);
     fs::resize_file(dir / "map.pgm", header.size() + 20000ULL * 20000ULL);
     const std::vector<InputProblem> problems =
-        problems_of([&] { load_map_file(dir / "map.yaml"); });
+        testing::input_problems_of([&] { load_map_file(dir / "map.yaml"); });
     ASSERT_EQ(problems.size(), 1U);
     EXPECT_EQ(problems[0].message(), (dir / "map.pgm").string() + ":2: PGM header: " + too_large);
     fs::remove(dir / "map.pgm");  // sparse, but it looks like 400 MB to anyone listing /tmp
@@ -372,7 +372,7 @@ TEST(MapFile, AFileHeaderMustEndWithinItsFirst64KiB) {
         "number, width, height and maxval, with their comments)";
     // A comment longer than the window.
     const std::string long_comment = "P5\n#" + std::string(kWindow, 'c') + "\n1 1\n255\n";
-    EXPECT_NE(message_of([&] {
+    EXPECT_NE(map_error_of([&] {
                   load(yaml_text(), long_comment + std::string(1, '\0'));
               }).find("map.pgm:2: " + too_long),
               std::string::npos);
@@ -380,7 +380,7 @@ TEST(MapFile, AFileHeaderMustEndWithinItsFirst64KiB) {
     std::string cut = "P5\n1 1\n#";
     cut += std::string(kWindow - cut.size() - 3, 'c') + "\n25";
     ASSERT_EQ(cut.size(), kWindow);
-    EXPECT_NE(message_of([&] {
+    EXPECT_NE(map_error_of([&] {
                   load(yaml_text(), cut + "5\n" + std::string(1, '\x80'));
               }).find("map.pgm:4: " + too_long),
               std::string::npos);

@@ -48,30 +48,6 @@ ResolvedRun short_drive(std::uint64_t seed = 5) {
     return resolve(config);
 }
 
-/// Keeps what the live loop computed at every step, to compare against the log and replays.
-class SnapshotKeeper final : public RunObserver {
-  public:
-    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
-        snapshots.push_back(snapshot);
-        truths.push_back(truth.pose);
-    }
-    std::vector<LoopSnapshot> snapshots;
-    std::vector<Pose2> truths;
-};
-
-class Both final : public RunObserver {
-  public:
-    Both(RunObserver& a, RunObserver& b) : a_(a), b_(b) {}
-    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
-        a_.on_step(snapshot, truth);
-        b_.on_step(snapshot, truth);
-    }
-
-  private:
-    RunObserver& a_;
-    RunObserver& b_;
-};
-
 struct RecordedRun {
     fs::path path;
     RunResult result;

@@ -197,27 +197,6 @@ TEST(RunLogLaser, MalformedScanCellsAreReportedAtFileLineWithTheColumn) {
 
 // --- A recorded laser run ---------------------------------------------------------------------
 
-class SnapshotKeeper final : public RunObserver {
-  public:
-    void on_step(const LoopSnapshot& snapshot, const GroundTruth& /*truth*/) override {
-        snapshots.push_back(snapshot);
-    }
-    std::vector<LoopSnapshot> snapshots;
-};
-
-class Both final : public RunObserver {
-  public:
-    Both(RunObserver& a, RunObserver& b) : a_(a), b_(b) {}
-    void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
-        a_.on_step(snapshot, truth);
-        b_.on_step(snapshot, truth);
-    }
-
-  private:
-    RunObserver& a_;
-    RunObserver& b_;
-};
-
 /// Ten seconds along the office lap with the laser filter and the simulated scanner.
 ResolvedRun office_laser_drive() {
     RunConfig config;
