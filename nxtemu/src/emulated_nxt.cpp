@@ -196,8 +196,8 @@ EmulatedNxt::~EmulatedNxt() {
 std::uint16_t EmulatedNxt::serve_tcp(std::uint16_t port, bool allow_remote) {
     State& s = *state_;
     const std::lock_guard lock(s.stop_mutex);
-    auto listener =
-        std::make_unique<nxt::TcpListener>(allow_remote ? kAnyAddress : comms::kLoopbackAddress, port);
+    auto listener = std::make_unique<nxt::TcpListener>(
+        allow_remote ? kAnyAddress : comms::kLoopbackAddress, port);
     const std::uint16_t bound = listener->port();
     nxt::TcpListener& serving = *listener;
     s.listeners.push_back(std::move(listener));
