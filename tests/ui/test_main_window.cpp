@@ -141,14 +141,16 @@ class MainWindowTest : public QObject {
         QCOMPARE(session_->config().filter.r22, 1000.0);
         QVERIFY(!window_->configPanel().messageIsError());
         QVERIFY(session_->running());  // applied live, the run goes on
-        // The worker takes the change at its next step; the first update that used it has an
-        // innovation covariance S = H·P·Hᵀ + J·R·Jᵀ of the order of R.
+        // The worker takes each entry at its next step, and a fast (release) worker may run
+        // steps between the two. S = H·P·Hᵀ + J·R·Jᵀ, and the distance row of J averages the
+        // two sensors, so S₀₀ ≈ (r11 + r22)/4: about 250 m² while only r11 is new, about 500 m²
+        // once both are. The first update with S₀₀ above 400 m² is the first with both.
         const auto first_with_new_r = [this]() -> std::size_t {
             const auto& samples = session_->history().samples();
             for (std::size_t i = 0; i < samples.size(); ++i) {
                 const WallUpdateReport& update = samples[i].snapshot.update;
                 if (update.status == StepStatus::Applied
-                    && update.innovation_covariance(0, 0) > 100.0) {
+                    && update.innovation_covariance(0, 0) > 400.0) {
                     return i;
                 }
             }
