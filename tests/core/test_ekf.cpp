@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
 
@@ -303,6 +304,43 @@ TEST(Ekf, CovarianceGuardRepairsWhatItIsGiven) {
     StateCovariance tiny = StateVector(1e-20, 1.0, 1.0).asDiagonal();
     EXPECT_EQ(condition_covariance<3>(tiny, limits), kRepairFloor);
     EXPECT_EQ(tiny(0, 0), limits.min_variance);
+}
+
+TEST(Ekf, ANearlySingularCovarianceIsRepairedIntoOneEveryCholeskyAccepts) {
+    // Found by the extreme-noise run built with clang: the exact LDLᵀ test passed this P
+    // on a pivot of rounding size, Eigen's LLT failed it, and its smallest eigenvalue is
+    // -2.2e-11 (ε·λ_max). Conditioning must leave no such matrix behind.
+    StateCovariance found;
+    found << 14709.972810254923, -11073.181142172351, 37701.381770159831,  //
+        -11073.181142172351, 8478.3213956235977, -28866.540482133867,      //
+        37701.381770159831, -28866.540482133867, 98283.271006546231;
+    const CovarianceLimits limits;
+    StateCovariance repaired = found;
+    EXPECT_TRUE(condition_covariance<3>(repaired, limits) & kRepairProjection);
+    EXPECT_EQ(Eigen::LLT<StateCovariance>(repaired).info(), Eigen::Success);
+    EXPECT_LT((repaired - found).norm(), 1e-6 * found.norm());  // a repair, not a new matrix
+
+    // Random rotations of eigenvalues (λ_max, λ_mid, λ_min) with λ_min/λ_max from -1e-10 to
+    // 1e-10, around the edge of what doubles resolve: every result is accepted by Eigen's
+    // LLT and has a smallest eigenvalue, computed independently, above zero.
+    Uniform uniform(45);
+    for (int i = 0; i < 20000; ++i) {
+        const Eigen::Quaterniond rotation =
+            Eigen::Quaterniond(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1))
+                .normalized();
+        const double largest = std::pow(10.0, uniform(-6.0, 6.0));
+        const StateVector eigenvalues(largest, largest * uniform(1e-6, 1.0),
+                                      largest * uniform(-1e-10, 1e-10));
+        const Eigen::Matrix3d V = rotation.toRotationMatrix();
+        StateCovariance P = V * eigenvalues.asDiagonal() * V.transpose();
+        P = (0.5 * (P + P.transpose())).eval();
+        const StateCovariance before = P;
+        condition_covariance<3>(P, limits);
+        ASSERT_EQ(Eigen::LLT<StateCovariance>(P).info(), Eigen::Success) << before;
+        ASSERT_GT(Eigen::SelfAdjointEigenSolver<StateCovariance>(P).eigenvalues().minCoeff(), 0.0)
+            << before;
+        ASSERT_EQ(P, P.transpose());
+    }
 }
 
 TEST(Ekf, PositiveDefiniteCheckAgreesWithEigensCholesky) {

@@ -8,9 +8,11 @@
 //   2. ceiling: rows/columns with P_ii > max are scaled by √(max/P_ii) (a congruence, so
 //      correlations and definiteness are kept);
 //   3. floor: P_ii < min gets (min − P_ii) added on the diagonal (adding a PSD matrix);
-//   4. if an LDLᵀ (Cholesky) factorisation still fails (an eigenvalue ≤ 0 from cancellation), P is
+//   4. if P is not robustly positive definite (an eigenvalue ≤ 1e-13·trace P, from
+//      cancellation; an LDLᵀ of P − 1e-13·trace(P)·I fails), P is
 //      projected onto the PD cone by clamping its eigenvalues to ≥ min (and to ≥ 1e-12 of
-//      the largest, the most a double can resolve).
+//      the largest, the most a double can resolve); if rounding in rebuilding P from its
+//      eigenvectors still leaves it indefinite, a growing multiple of the identity is added.
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -62,6 +64,22 @@ bool is_positive_definite(const Eigen::Matrix<double, N, N>& P) {
     return true;
 }
 
+/// Smallest eigenvalue, relative to trace(P), that the guard accepts without projecting.
+/// A pivot of a few ε·‖P‖ passes an exact LDLᵀ test but is rounding noise: another order
+/// of the same arithmetic (Eigen's LLT, another compiler) finds the matrix indefinite.
+inline constexpr double kPositiveDefiniteMargin = 1e-13;
+
+/// True if every eigenvalue of the symmetric P exceeds kPositiveDefiniteMargin·trace(P):
+/// P − margin·I is positive definite. The margin is far above rounding (ε·‖P‖ ≈ 2e-16·‖P‖),
+/// so any Cholesky of P succeeds, and below the projection's floor (1e-12·λ_max ≥
+/// 1e-12·trace/N), so a projected P passes.
+template <int N>
+bool is_robustly_positive_definite(const Eigen::Matrix<double, N, N>& P) {
+    Eigen::Matrix<double, N, N> shifted = P;
+    shifted.diagonal().array() -= kPositiveDefiniteMargin * P.trace();
+    return is_positive_definite<N>(shifted);
+}
+
 /// Conditions P in place (see the file comment). P must be finite. Returns the repairs made.
 template <int N>
 std::uint8_t condition_covariance(Eigen::Matrix<double, N, N>& P, const CovarianceLimits& limits) {
@@ -91,7 +109,7 @@ std::uint8_t condition_covariance(Eigen::Matrix<double, N, N>& P, const Covarian
         }
     }
 
-    if (!is_positive_definite<N>(P)) {
+    if (!is_robustly_positive_definite<N>(P)) {
         // Clamp to the floor, and to 1e-12 of the largest eigenvalue: a condition number
         // beyond ~1e12 cannot be represented in doubles and would fail Cholesky again.
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N>> eigen(P);
@@ -100,6 +118,13 @@ std::uint8_t condition_covariance(Eigen::Matrix<double, N, N>& P, const Covarian
         const auto clamped = eigen.eigenvalues().cwiseMax(floor);
         P = eigen.eigenvectors() * clamped.asDiagonal() * eigen.eigenvectors().transpose();
         P = (0.5 * (P + P.transpose())).eval();
+        // Rebuilding P from its eigenvectors rounds each entry by ~ε·λ_max, far below the
+        // floor, so P passes the test above. Should it not (a floor at the ceiling), δ·I,
+        // which lifts every eigenvalue by exactly δ, is added with δ doubling until it does.
+        for (double lift = floor;
+             !is_robustly_positive_definite<N>(P) && lift < limits.max_variance; lift *= 2.0) {
+            P.diagonal().array() += lift;
+        }
         repairs |= kRepairProjection;
     }
     return repairs;
