@@ -119,6 +119,13 @@ struct Firmware {
     std::atomic<int> count_offset{0};
     std::atomic<bool> silent{false};
 
+    // Every request without its own answer below gets a plain "ok" status reply. (Declared
+    // before its use: clang reports a member template of a class in an anonymous namespace
+    // used above its definition as undefined.)
+    template <typename Other>
+    std::optional<Telegram> answer(const DecodedRequest& request, const Other&) {
+        return encode_status_reply(request.opcode, status::kOk);
+    }
     std::optional<Telegram> operator()(const DecodedRequest& request) {
         if (silent || !request.body) {
             return std::nullopt;
@@ -145,10 +152,6 @@ struct Firmware {
     }
     std::optional<Telegram> answer(const DecodedRequest&, const KeepAlive&) {
         return encode_keep_alive_reply(status::kOk, 600000);
-    }
-    template <typename Other>
-    std::optional<Telegram> answer(const DecodedRequest& request, const Other&) {
-        return encode_status_reply(request.opcode, status::kOk);
     }
 };
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,7 @@ TEST(ShippedMaps, TheStandardArenaMapHoldsExactlyTheWorldsFourWalls) {
     // Every occupied cell's centre lies on a wall (within half a cell)...
     const std::vector<Vector2> centres = occupied_centres(grid);
     for (const Vector2& centre : centres) {
-        double nearest = INFINITY;
+        double nearest = std::numeric_limits<double>::infinity();
         for (const Wall& wall : walls) {
             nearest = std::min(nearest, distance_to_segment(centre, wall.start, wall.end));
         }

@@ -15,10 +15,13 @@ namespace {
 
 /// `a` blended towards `b` by `t` in [0, 1].
 QColor mix(const QColor& a, const QColor& b, double t) {
-    const auto blend = [t](double x, double y) { return x + (y - x) * t; };
-    return QColor::fromRgbF(static_cast<float>(blend(a.redF(), b.redF())),
-                            static_cast<float>(blend(a.greenF(), b.greenF())),
-                            static_cast<float>(blend(a.blueF(), b.blueF())));
+    // QColor's components are floats; the blend is worked in double and rounded back once.
+    const auto blend = [t](float x, float y) {
+        const double from = static_cast<double>(x);
+        return static_cast<float>(from + (static_cast<double>(y) - from) * t);
+    };
+    return QColor::fromRgbF(blend(a.redF(), b.redF()), blend(a.greenF(), b.greenF()),
+                            blend(a.blueF(), b.blueF()));
 }
 
 QColor with_alpha(QColor colour, int alpha) {
