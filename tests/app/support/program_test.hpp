@@ -39,10 +39,13 @@ class ProgramTest : public ::testing::Test {
         std::filesystem::create_directories(dir_);
     }
 
-    /// Runs `program arguments` through the shell, capturing stdout and stderr.
-    Result run_program(const std::string& program, const std::string& arguments) const {
-        const std::filesystem::path out = dir_ / "stdout.txt";
-        const std::filesystem::path err = dir_ / "stderr.txt";
+    /// Runs `program arguments` through the shell, capturing stdout and stderr (in
+    /// `<prefix>stdout.txt` and `<prefix>stderr.txt`: runs at the same time need their own
+    /// prefixes).
+    Result run_program(const std::string& program, const std::string& arguments,
+                       const std::string& prefix = "") const {
+        const std::filesystem::path out = dir_ / (prefix + "stdout.txt");
+        const std::filesystem::path err = dir_ / (prefix + "stderr.txt");
         const std::string command =
             program + " " + arguments + " > " + out.string() + " 2> " + err.string();
         const int status = std::system(command.c_str());
