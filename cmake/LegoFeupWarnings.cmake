@@ -1,5 +1,5 @@
 # Warnings for every target of the project: `legofeup_enable_warnings(target)`.
-# LEGOFEUP_WARNINGS_AS_ERRORS (the `dev` preset turns it on) makes them errors.
+# LEGOFEUP_WARNINGS_AS_ERRORS (the `dev` and `asan` presets turn it on) makes them errors.
 option(LEGOFEUP_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" OFF)
 
 function(legofeup_enable_warnings target)
@@ -9,7 +9,8 @@ function(legofeup_enable_warnings target)
         -Wnon-virtual-dtor -Woverloaded-virtual -Wcast-align
         -Wnull-dereference -Wdouble-promotion -Wformat=2
         -Wimplicit-fallthrough -Wmisleading-indentation)
-    # GCC's own checks (clang, used for the fuzzers, does not know them).
+    # GCC's own checks (clang, which the dev and asan presets use, does not know them; the
+    # release build, which CI fails on any warning, runs them).
     if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
         target_compile_options(${target} PRIVATE
             -Wduplicated-cond -Wduplicated-branches -Wlogical-op -Wuseless-cast)

@@ -19,7 +19,7 @@ packages=(
     libbenchmark-dev                    # bench/
     libbluetooth-dev                    # comms/: BlueZ RFCOMM sockets for bt: brick addresses
     nbc                                 # tests: compile-check the NXC relay program
-    clang libclang-rt-14-dev            # fuzz/: libFuzzer targets of the protocol decoders
+    clang lld libclang-rt-14-dev        # the dev and asan presets' compiler and linker; libFuzzer
     python3                             # examples/python and its test
 )
 

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Installs what is needed, builds, and runs every test: the warnings-as-errors `dev` build,
-# the AddressSanitizer + UndefinedBehaviorSanitizer `asan` build, and a bounded run of every
-# fuzzer (the protocol decoders and the readers of the files users hand in). Each phase
-# prints how long it took, so a slow step shows where it is.
+# Installs what is needed, builds, and runs every test once: the `dev` build (clang, debug,
+# warnings as errors) runs the GUI's tests; the `asan` build (clang, AddressSanitizer +
+# UndefinedBehaviorSanitizer) runs every other test, and then every fuzzer (the protocol
+# decoders and the readers of the files users hand in) for a bounded time. Before running,
+# it checks that the two lists together are the whole suite, so no test is left out. Each
+# phase prints how long it took, so a slow step shows where it is.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -15,12 +17,19 @@ phase "install the Debian packages"
 scripts/install-deps.sh
 
 for preset in dev asan; do
-    phase "$preset: configure, build, test"
+    phase "$preset: configure and build"
     cmake --preset "$preset"
     cmake --build --preset "$preset"
-    ctest --preset "$preset"
 done
-phase "fuzz: every fuzzer, 10 s each"
+
+phase "check that the GUI's tests (dev) and the others (asan) are the whole suite"
+scripts/check-test-split.sh
+
+phase "dev: the GUI's tests"
+ctest --preset dev --label-regex '^gui$'
+phase "asan: every other test, under the sanitizers"
+ctest --preset asan
+phase "fuzz: every fuzzer, 10 s each, two at a time"
 scripts/fuzz.sh 10
 phase "done"
-echo "All tests passed (dev, asan and fuzz) in $((SECONDS - phase_start)) s."
+echo "All tests passed (the GUI's in dev, the others in asan, and the fuzzers) in $((SECONDS - phase_start)) s."
