@@ -2,7 +2,8 @@
 # Installs what is needed, builds, and runs every test once: the `dev` build (clang, debug,
 # warnings as errors) runs the GUI's tests; the `asan` build (clang, AddressSanitizer +
 # UndefinedBehaviorSanitizer) runs every other test, and then every fuzzer (the protocol
-# decoders and the readers of the files users hand in) for a bounded time. Before running,
+# decoders and the readers of the files users hand in) for a bounded time; the real-time
+# link tests run beside the others (they wait rather than compute). Before running,
 # it checks that the two lists together are the whole suite, so no test is left out. Each
 # phase prints how long it took, so a slow step shows where it is.
 set -euo pipefail
@@ -28,7 +29,22 @@ scripts/check-test-split.sh
 phase "dev: the GUI's tests"
 ctest --preset dev --label-regex '^gui$'
 phase "asan: every other test, under the sanitizers"
-ctest --preset asan
+# The real-time tests (label realtime: a lap of experiment f through the emulated NXT, in
+# real time) mostly wait on the link, so they run beside the others, which keep the two
+# cores; their output follows the others'.
+mkdir -p build
+ctest --preset asan --label-regex '^realtime$' --parallel 4 >build/asan-realtime.log 2>&1 &
+realtime=$!
+status=0
+ctest --preset asan --label-exclude '^realtime$' || status=$?
+realtime_status=0
+wait "$realtime" || realtime_status=$?
+echo "-- the real-time tests:"
+cat build/asan-realtime.log
+if [[ $status -ne 0 || $realtime_status -ne 0 ]]; then
+    echo "asan: tests failed (above)." >&2
+    exit 1
+fi
 phase "fuzz: every fuzzer, 10 s each, two at a time"
 scripts/fuzz.sh 10
 phase "done"
