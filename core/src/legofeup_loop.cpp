@@ -82,6 +82,7 @@ void LegoFeupLoop::reset() {
     controller_ = config_.controller;
     have_counts_ = false;
     steps_ = 0;
+    glitches_ = 0;
     last_time_ = 0.0;
     snapshot_ = LoopSnapshot{};
     snapshot_.localisation = config_.lesson.localisation;
@@ -126,29 +127,58 @@ void LegoFeupLoop::set_manual_command(const VelocityCommand& command) {
 }
 
 // Eq. 9 and 8: this period's wheel distances, d and Δθ; dead reckoning (eq. 7) alongside.
-// Returns whether the filters predict with this increment: not on the first frame (no
-// reference yet) nor when the encoders glitched.
+// Returns whether the filters predict this period: not on the first frame (no reference
+// yet). A wheel that moved farther than max_wheel_travel_per_step per nominal period, times
+// the periods since the last counts (at least one), is an encoder glitch (a counter reset): its
+// motion is not used, and the filters predict with no increment and the noise of the skipped motion
+// instead (skipped_motion_noise).
 bool LegoFeupLoop::advance_odometry(const SensorFrame& frame) {
     LoopSnapshot& s = snapshot_;
     s.increment = {};
     s.odometry_glitch = false;
-    bool moved = false;
+    bool predict = false;
     if (have_counts_) {
+        // The counts' last reading may be several periods back (frames went missing).
+        const double elapsed_periods = periods_between(frame.time - last_counts_time_);
         const OdometryIncrement increment = odometry_increment(
             encoder_delta(frame.encoder_counts[0], last_counts_[0]),
             encoder_delta(frame.encoder_counts[1], last_counts_[1]), config_.odometry);
-        const double limit = config_.max_wheel_travel_per_step;
+        const double limit = config_.max_wheel_travel_per_step * std::max(1.0, elapsed_periods);
         if (std::abs(increment.d_right) > limit || std::abs(increment.d_left) > limit) {
             s.odometry_glitch = true;
+            ++glitches_;
         } else {
             s.increment = increment;
             odometry_pose_ = advance_pose(odometry_pose_, increment);  // eq. 7, no updates
-            moved = true;
         }
+        predict = true;
     }
+    s.odometry_glitches = glitches_;
     last_counts_ = frame.encoder_counts;
+    last_counts_time_ = frame.time;
     have_counts_ = true;
-    return moved;
+    return predict;
+}
+
+double LegoFeupLoop::periods_between(double seconds) const {
+    // On the microsecond grid that the UDP protocol and the NXT link carry times on, so a
+    // run gives the same bits in-process and over a link, and regular frames exactly 1.
+    const auto elapsed = std::llround(seconds * 1e6);
+    const auto nominal = std::llround(config_.control_period * 1e6);
+    if (elapsed <= 0 || nominal <= 0) {
+        return 1.0;  // the first frame, or a clock that did not advance: one period
+    }
+    return static_cast<double>(elapsed) / static_cast<double>(nominal);
+}
+
+Eigen::Matrix2d LegoFeupLoop::skipped_motion_noise(double period) const {
+    // Over a period whose counts were a glitch each wheel moved an unknown distance of at
+    // most L = v_max·Δt either way: uniform on [−L, L], variance L²/3, independently. Then
+    // d = (d_r + d_l)/2 has variance L²/6, Δθ = (d_r − d_l)/b has 2L²/(3b²), and the two
+    // are uncorrelated.
+    const double L = config_.max_wheel_speed * period;
+    const double b = config_.odometry.wheel_base;
+    return Eigen::Vector2d(L * L / 6.0, 2.0 * L * L / (3.0 * b * b)).asDiagonal();
 }
 
 // The estimators of this period, timed: the pose filter (and its shadow) or the 5-state
@@ -159,34 +189,52 @@ void LegoFeupLoop::estimate(const SensorFrame* frame, bool predict, double perio
     s.filter_seconds = 0.0;
     s.shadow_filter_seconds = 0.0;
     if (!uses_pose_filter()) {
-        // The fusion filter starts with the second frame (it needs a period).
-        if (predict) {
+        // The fusion filter starts with the second frame (it needs a period), and skips a
+        // period whose counts were a glitch (its wheel speeds would be the jump's).
+        if (predict && !s.odometry_glitch) {
             s.filter_seconds = timed([&] { run_gyro_fusion(frame, period); });
         }
         return;
     }
-    s.filter_seconds = timed([&] { run_pose_filter(filter_, frame, predict, true); });
+    s.filter_seconds = timed([&] { run_pose_filter(filter_, frame, predict, period, true); });
     if (config_.lesson.compare_kinds) {
-        s.shadow_filter_seconds = timed([&] { run_pose_filter(shadow_, frame, predict, false); });
+        s.shadow_filter_seconds =
+            timed([&] { run_pose_filter(shadow_, frame, predict, period, false); });
     }
 }
 
-StepStatus LegoFeupLoop::predict_pose(PoseFilter& filter, const OdometryIncrement& increment) {
+StepStatus LegoFeupLoop::predict_pose(PoseFilter& filter, const OdometryIncrement& increment,
+                                      double period) {
     // Eq. 11–13: X̂ ← f(X̂, U, 0), P ← ∇f_X P ∇f_Xᵀ + ∇f_q Q ∇f_qᵀ; the compass lesson's Q
     // depends on the motion and heading (paper 004 eq. 5), the laser lesson's has a static
     // and a motion-dependent part added to the pose (paper 001 eq. 11–13).
+    //
+    // Q is stated per nominal control period Ts (the settings' q11 and q22, the laser
+    // lesson's static part). A step spanning Δt adds Q·Δt/Ts: the process noise is a
+    // random walk whose variance grows in proportion to time, so frames 40–150 ms apart (an
+    // NXT over Bluetooth) give the same covariance over a lap as the simulator's regular
+    // 50 ms. The compass lesson's Q is proportional to the motion, which already is Δt's.
+    const double elapsed_periods = periods_between(period);
     switch (config_.lesson.localisation) {
         case Localisation::Compass:
             return filter.predict(CompassOdometryProcessModel(increment, config_.lesson.compass));
-        case Localisation::Laser:
-            return filter.predict(
-                LaserProcessModel(increment, filter.state()(kTheta), config_.lesson.laser));
+        case Localisation::Laser: {
+            LaserTuning tuning = config_.lesson.laser;
+            tuning.q_x_static *= elapsed_periods;
+            tuning.q_y_static *= elapsed_periods;
+            tuning.q_theta_static *= elapsed_periods;
+            return filter.predict(LaserProcessModel(increment, filter.state()(kTheta), tuning));
+        }
         case Localisation::Walls:
         case Localisation::Beacons:
         case Localisation::GyroFusion:
             break;
     }
-    return filter.predict(OdometryProcessModel(increment, process_noise_));
+    Eigen::Matrix2d q = process_noise_ * elapsed_periods;
+    if (snapshot_.odometry_glitch) {
+        q += skipped_motion_noise(period);
+    }
+    return filter.predict(OdometryProcessModel(increment, q));
 }
 
 void LegoFeupLoop::read_ir(const SensorFrame& frame) {
@@ -289,9 +337,9 @@ void LegoFeupLoop::begin_laser_report() {
 // One filter's whole period: predict (when there was odometry), then the localisation's
 // corrections. `frame` is null when only a prediction is due.
 void LegoFeupLoop::run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict,
-                                   bool primary) {
+                                   double period, bool primary) {
     if (predict) {
-        const StepStatus status = predict_pose(filter, snapshot_.increment);
+        const StepStatus status = predict_pose(filter, snapshot_.increment, period);
         if (primary) {
             snapshot_.predict_status = status;
         }
@@ -347,8 +395,8 @@ const LoopSnapshot& LegoFeupLoop::step(const SensorFrame& frame) {
 
     read_ir(frame);
     speeds_.step(frame, period, s.speeds, s.readings);
-    const bool moved = advance_odometry(frame);
-    estimate(&frame, moved, period);
+    const bool predict = advance_odometry(frame);
+    estimate(&frame, predict, period);
     control_and_publish();
     last_time_ = frame.time;
     return s;
@@ -368,6 +416,7 @@ const LoopSnapshot& LegoFeupLoop::step_without_frame(double time) {
     // in which the robot moved in some unknown way; its odometry arrives with the next frame.
     s.increment = {};
     s.odometry_glitch = false;
+    s.odometry_glitches = glitches_;
     begin_laser_report();
     estimate(nullptr, have_counts_, period);
     for (IrSample& sample : s.ir) {

@@ -83,7 +83,7 @@ void further_lesson_cells(std::ostream& out, const LoopSnapshot& s, const Ground
 /// The laser lesson's columns (paper 001): whether a scan came, what the ICP match did, the
 /// mismatch count and recovery, and the observation with its innovation. Empty cells unless
 /// the localisation is laser; the match's cells empty without a scan, the observation's
-/// unless the match was used. Ends the row.
+/// unless the match was used.
 void laser_cells(std::ostream& out, const LoopSnapshot& s) {
     const LaserUpdate& laser = s.laser;
     const bool active = s.localisation == Localisation::Laser && !s.frame_missing;
@@ -107,9 +107,7 @@ void laser_cells(std::ostream& out, const LoopSnapshot& s) {
     number_if(out, used, laser.observed_pose.x);
     number_if(out, used, laser.observed_pose.y);
     number_if(out, used, laser.observed_pose.theta);
-    // The last cell: no comma after it.
-    cell(out, used && laser.status == StepStatus::Applied ? laser.nis : kNone);
-    out << '\n';
+    number(out, used && laser.status == StepStatus::Applied ? laser.nis : kNone);
 }
 
 }  // namespace
@@ -128,7 +126,9 @@ const char* trace_csv_header() {
            "laser_scan,laser_matched,laser_update,laser_matched_points,laser_icp_iterations,"
            "laser_icp_converged,laser_icp_rms,laser_mismatches,laser_recovery,"
            "laser_innovation_x,laser_innovation_y,laser_innovation_theta,"
-           "laser_observed_x,laser_observed_y,laser_observed_theta,laser_nis";
+           "laser_observed_x,laser_observed_y,laser_observed_theta,laser_nis,"
+           // The loop's own checks of its inputs.
+           "odometry_glitch";
 }
 
 TraceCsvWriter::TraceCsvWriter(std::ostream& out, const LoopConfig& loop) : out_(out), loop_(loop) {
@@ -168,6 +168,8 @@ void TraceCsvWriter::on_step(const LoopSnapshot& s, const GroundTruth& truth) {
          << (s.frame_missing ? 1 : 0) << ',';
     further_lesson_cells(out_, s, truth);
     laser_cells(out_, s);
+    // The last cell: no comma after it.
+    out_ << (s.odometry_glitch ? 1 : 0) << '\n';
 }
 
 }  // namespace legofeup::lessons

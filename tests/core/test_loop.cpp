@@ -221,7 +221,9 @@ TEST(LegoFeupLoop, EncoderGlitchIsFlaggedAndSkipped) {
     frame.encoder_counts = {100000, 100000};  // 37 m in 50 ms: a counter reset, not motion
     const LoopSnapshot& s = loop.step(frame);
     EXPECT_TRUE(s.odometry_glitch);
-    EXPECT_EQ(s.predict_status, StepStatus::NotAttempted);
+    // The filter predicts without the jump (and with the noise of the motion it hides:
+    // test_loop_timing.cpp).
+    EXPECT_EQ(s.predict_status, StepStatus::Applied);
     EXPECT_EQ(s.estimate, to_state(loop.config().initial.pose));
     frame.encoder_counts = {100010, 100010};  // normal motion resumes from the new reference
     EXPECT_EQ(loop.step(frame).predict_status, StepStatus::Applied);

@@ -26,13 +26,14 @@ const std::vector<std::string> kLaserColumns = {
     "laser_recovery",       "laser_innovation_x",  "laser_innovation_y",   "laser_innovation_theta",
     "laser_observed_x",     "laser_observed_y",    "laser_observed_theta", "laser_nis"};
 
-TEST(TraceCsvLaser, TheLaserColumnsComeLastAfterTheFurtherLessons) {
+TEST(TraceCsvLaser, TheLaserColumnsComeAfterTheFurtherLessonsAndBeforeTheGlitchFlag) {
     const std::vector<std::string> names = cells_of(trace_csv_header());
-    ASSERT_GE(names.size(), kLaserColumns.size() + 1);
-    const std::vector<std::string> tail(
-        names.end() - static_cast<std::ptrdiff_t>(kLaserColumns.size()), names.end());
-    EXPECT_EQ(tail, kLaserColumns);
-    EXPECT_EQ(names[names.size() - kLaserColumns.size() - 1], "wheel_left_true");
+    ASSERT_GE(names.size(), kLaserColumns.size() + 2);
+    EXPECT_EQ(names.back(), "odometry_glitch");
+    const std::vector<std::string> laser(
+        names.end() - static_cast<std::ptrdiff_t>(kLaserColumns.size()) - 1, names.end() - 1);
+    EXPECT_EQ(laser, kLaserColumns);
+    EXPECT_EQ(names[names.size() - kLaserColumns.size() - 2], "wheel_left_true");
 }
 
 LoopSnapshot laser_step(std::uint64_t step) {
@@ -161,6 +162,20 @@ TEST(TraceCsvLaser, AnUpdateRejectedByTheFilterHasNoNis) {
     EXPECT_EQ(rows[0].at("laser_update"), to_string(StepStatus::RejectedByGate));
     EXPECT_EQ(rows[0].at("laser_observed_y"), "2");
     EXPECT_EQ(rows[0].at("laser_nis"), "");
+}
+
+TEST(TraceCsvLaser, TheGlitchFlagMarksTheStepsWhoseCountsWereNotUsed) {
+    const LoopConfig loop;
+    std::ostringstream csv;
+    TraceCsvWriter writer(csv, loop);
+    LoopSnapshot s = laser_step(1);
+    writer.on_step(s, GroundTruth{});
+    s.odometry_glitch = true;
+    writer.on_step(s, GroundTruth{});
+    const auto rows = rows_of(csv.str());
+    ASSERT_EQ(rows.size(), 2U);
+    EXPECT_EQ(rows[0].at("odometry_glitch"), "0");
+    EXPECT_EQ(rows[1].at("odometry_glitch"), "1");
 }
 
 }  // namespace

@@ -66,15 +66,18 @@ class LegoFeupLoop {
   private:
     void apply_tuning();
     bool advance_odometry(const SensorFrame& frame);
+    Eigen::Matrix2d skipped_motion_noise(double period) const;
+    double periods_between(double seconds) const;  // Δt/Ts, see predict_pose
     void estimate(const SensorFrame* frame, bool predict, double period);
-    StepStatus predict_pose(PoseFilter& filter, const OdometryIncrement& increment);
+    StepStatus predict_pose(PoseFilter& filter, const OdometryIncrement& increment, double period);
     void read_ir(const SensorFrame& frame);
     void update_with_walls(PoseFilter& filter, bool primary);
     void update_with_beacons(PoseFilter& filter, const SensorFrame& frame, bool primary);
     void update_with_compass(PoseFilter& filter, const LoopSnapshot& s);
     void update_with_laser(PoseFilter& filter, const SensorFrame& frame, bool primary);
     void begin_laser_report();
-    void run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict, bool primary);
+    void run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict, double period,
+                         bool primary);
     void run_gyro_fusion(const SensorFrame* frame, double period);
     void control_and_publish();
     bool uses_pose_filter() const;
@@ -94,7 +97,9 @@ class LegoFeupLoop {
     Pose2 odometry_pose_;
     std::array<std::int32_t, 2> last_counts_{};
     bool have_counts_ = false;
+    double last_counts_time_ = 0.0;  // the time of the frame last_counts_ came with
     std::uint64_t steps_ = 0;
+    std::uint64_t glitches_ = 0;  // encoder glitches since the reset
 
     // Derived from config_.filter by apply_tuning(), so the step does no setup work.
     Eigen::Matrix2d process_noise_ = Eigen::Matrix2d::Zero();  // Q

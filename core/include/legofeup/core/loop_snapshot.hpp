@@ -117,9 +117,13 @@ struct LoopSnapshot {
     // Estimation module.
     StateVector estimate = StateVector::Zero();            ///< X̂ after this step
     StateCovariance covariance = StateCovariance::Zero();  ///< P after this step
-    Pose2 odometry_pose;           ///< dead reckoning from the same counts (no updates ever)
-    OdometryIncrement increment;   ///< this period's d1, d2, d, Δθ
-    bool odometry_glitch = false;  ///< encoder jump beyond max_wheel_travel_per_step: skipped
+    Pose2 odometry_pose;          ///< dead reckoning from the same counts (no updates ever)
+    OdometryIncrement increment;  ///< this period's d1, d2, d, Δθ
+    /// The encoders jumped beyond max_wheel_travel_per_step (per nominal period, times the
+    /// periods this step spans): the increment was not used, and the prediction added the
+    /// noise of a skipped motion instead.
+    bool odometry_glitch = false;
+    std::uint64_t odometry_glitches = 0;  ///< glitches since the run began, this one included
     StepStatus predict_status = StepStatus::NotAttempted;
 
     Localisation localisation = Localisation::Walls;
