@@ -167,6 +167,9 @@ std::unique_ptr<ArenaView> make_view(const RunHistory& history) {
 QPointF ray_middle(const RunHistory& history, int id) {
     const LoopSnapshot& s = history.latest().snapshot;
     const Beacon* beacon = find_beacon(history.scene().beacons, id);
+    if (beacon == nullptr) {
+        qFatal("the scene has no beacon %d", id);  // the test's own history is wrong
+    }
     const Pose2 pose = to_pose(s.estimate);
     const double bearing = wrap_angle(expected_bearing(s.estimate, *beacon) + innovation_of(id));
     // Independently of bearing_ray(): along θ + z, half the drawn length.
