@@ -78,7 +78,14 @@ void LossyRelay::run(std::stop_token stop) {
             if (!datagram) {
                 break;
             }
-            client_ = datagram->from;
+            // Only the first client's packets, and below only the server's: with tests in
+            // parallel a port can be reused while another test's program still sends to it,
+            // and a stray command relayed on would fill one of the injected gaps.
+            if (client_.port == 0) {
+                client_ = datagram->from;
+            } else if (!(datagram->from == client_)) {
+                continue;
+            }
             comms::PacketHeader header;
             const bool command = decode_header(datagram->bytes, header) == comms::DecodeError::None
                                  && header.type == comms::PacketType::WheelCommand;
@@ -88,6 +95,9 @@ void LossyRelay::run(std::stop_token stop) {
             const auto datagram = server_side_.receive(0us);
             if (!datagram) {
                 break;
+            }
+            if (!(datagram->from == server_)) {
+                continue;
             }
             comms::PacketHeader header;
             const bool frame = decode_header(datagram->bytes, header) == comms::DecodeError::None
