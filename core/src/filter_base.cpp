@@ -14,6 +14,8 @@ const char* to_string(StepStatus status) {
             return "rejected: innovation covariance not positive definite";
         case StepStatus::RejectedByGate:
             return "rejected by the Mahalanobis gate";
+        case StepStatus::AppliedLinearised:
+            return "applied linearised (no sigma points: predicted as the EKF)";
     }
     return "unknown";
 }

@@ -128,7 +128,7 @@ const char* trace_csv_header() {
            "laser_innovation_x,laser_innovation_y,laser_innovation_theta,"
            "laser_observed_x,laser_observed_y,laser_observed_theta,laser_nis,"
            // The loop's own checks of its inputs.
-           "odometry_glitch";
+           "odometry_glitch,prediction";
 }
 
 TraceCsvWriter::TraceCsvWriter(std::ostream& out, const LoopConfig& loop) : out_(out), loop_(loop) {
@@ -168,8 +168,9 @@ void TraceCsvWriter::on_step(const LoopSnapshot& s, const GroundTruth& truth) {
          << (s.frame_missing ? 1 : 0) << ',';
     further_lesson_cells(out_, s, truth);
     laser_cells(out_, s);
+    out_ << (s.odometry_glitch ? 1 : 0) << ',';
     // The last cell: no comma after it.
-    out_ << (s.odometry_glitch ? 1 : 0) << '\n';
+    out_ << to_string(s.predict_status) << '\n';
 }
 
 }  // namespace legofeup::lessons

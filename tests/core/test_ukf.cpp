@@ -355,7 +355,7 @@ TEST(Ukf, WallUpdateAcrossTheHeadingSeamEqualsTheEkf) {
     }
 }
 
-// (d) Rejections leave x and P unchanged.
+// (d) Rejected updates and non-finite inputs leave x and P unchanged.
 TEST(Ukf, RejectsNonPositiveSpreadLeavingTheEstimate) {
     const StateVector x0(0.3, -0.2, 0.4);
     const BeaconBearingMeasurement m(Vector2(1.0, 1.0), 0.3, 1e-2);
@@ -365,13 +365,65 @@ TEST(Ukf, RejectsNonPositiveSpreadLeavingTheEstimate) {
     EXPECT_EQ(ukf.update(m).status, StepStatus::RejectedSingular);
     EXPECT_EQ(ukf.state(), x0);
     EXPECT_EQ(ukf.covariance(), test_covariance());
-    ukf.set_params(UkfParams{-5.0});  // predict: n + κ = 0
-    EXPECT_EQ(ukf.predict(process), StepStatus::RejectedSingular);
-    EXPECT_EQ(ukf.state(), x0);
-    EXPECT_EQ(ukf.covariance(), test_covariance());
     ukf.set_params(UkfParams{-4.5});  // predict: n + κ = 0.5 > 0 is fine
     EXPECT_EQ(ukf.predict(process), StepStatus::Applied);
     EXPECT_EQ(ukf.params().kappa, -4.5);
+}
+
+// (e) A prediction without sigma points is the EKF's, never a dropped motion.
+/// The odometry model with only the UKF's hooks: the fallback must difference propagate().
+struct PropagateOnly {
+    static constexpr int kNoiseSize = 2;
+    OdometryProcessModel model;
+    StateVector propagate(const StateVector& x, const Eigen::Vector2d& q) const {
+        return model.propagate(x, q);
+    }
+    Eigen::Matrix2d noise_covariance() const { return model.noise_covariance(); }
+};
+
+TEST(Ukf, APredictionWithoutSigmaPointsMovesTheStateAsTheEkfWould) {
+    // Heading near π, so the finite differences must wrap; a turn and a drive, so F and G
+    // are not the identity. Expected values: the EKF's own prediction (analytic Jacobians).
+    const StateVector x0(0.3, -0.2, 3.1);
+    const OdometryProcessModel odometry(increment_from_motion(0.02, 0.08, 0.12),
+                                        Eigen::Vector2d(4e-6, 9e-6).asDiagonal());
+    Ekf ekf;
+    ASSERT_TRUE(ekf.reset(x0, test_covariance()));
+    ASSERT_EQ(ekf.predict(odometry), StepStatus::Applied);
+    ASSERT_GT((ekf.state() - x0).norm(), 0.01);  // the motion is there to lose
+
+    const auto expect_ekf = [&](const Ukf& ukf, double tolerance) {
+        EXPECT_LT(PoseStateSpace::difference(ukf.state(), ekf.state()).norm(), tolerance);
+        EXPECT_LT((ukf.covariance() - ekf.covariance()).norm(), tolerance);
+    };
+    // n + κ = 5 − 5 = 0: no spread, with the model's Jacobians.
+    Ukf no_spread(UkfParams{-5.0});
+    ASSERT_TRUE(no_spread.reset(x0, test_covariance()));
+    EXPECT_EQ(no_spread.predict(odometry), StepStatus::AppliedLinearised);
+    expect_ekf(no_spread, 1e-15);
+    // The same by central differences of propagate(): O(h²) ≈ 1e-12 relative.
+    Ukf differenced(UkfParams{-6.0});
+    ASSERT_TRUE(differenced.reset(x0, test_covariance()));
+    EXPECT_EQ(differenced.predict(PropagateOnly{odometry}), StepStatus::AppliedLinearised);
+    expect_ekf(differenced, 1e-9);
+    // A sigma-point prediction is not the EKF's to that precision: the comparison above
+    // could tell a transform from a linearisation.
+    Ukf unscented;
+    ASSERT_TRUE(unscented.reset(x0, test_covariance()));
+    EXPECT_EQ(unscented.predict(odometry), StepStatus::Applied);
+    EXPECT_GT((unscented.covariance() - ekf.covariance()).norm(), 1e-6);
+}
+
+TEST(Ukf, AnIndefiniteProcessNoiseFallsBackAndLeavesAPositiveDefiniteCovariance) {
+    const StateVector x0(0.3, -0.2, 0.4);
+    LinearProcess process = linear_process();
+    process.Q << 3e-3, 0.0,  //
+        0.0, -1e-2;          // no square root: no sigma points for q
+    Ukf ukf;
+    ASSERT_TRUE(ukf.reset(x0, test_covariance()));
+    EXPECT_EQ(ukf.predict(process), StepStatus::AppliedLinearised);
+    EXPECT_LT((ukf.state() - (process.F * x0 + process.offset)).norm(), 1e-15);
+    EXPECT_GT(min_eigenvalue(ukf.covariance()), 0.0);  // the base repaired F P Fᵀ + G Q Gᵀ
 }
 
 TEST(Ukf, RejectsNonFiniteInputs) {

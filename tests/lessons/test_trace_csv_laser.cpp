@@ -26,14 +26,18 @@ const std::vector<std::string> kLaserColumns = {
     "laser_recovery",       "laser_innovation_x",  "laser_innovation_y",   "laser_innovation_theta",
     "laser_observed_x",     "laser_observed_y",    "laser_observed_theta", "laser_nis"};
 
-TEST(TraceCsvLaser, TheLaserColumnsComeAfterTheFurtherLessonsAndBeforeTheGlitchFlag) {
+// The loop's own checks of its inputs and steps, last in every row.
+const std::vector<std::string> kLoopCheckColumns = {"odometry_glitch", "prediction"};
+
+TEST(TraceCsvLaser, TheLaserColumnsComeAfterTheFurtherLessonsAndBeforeTheLoopsChecks) {
     const std::vector<std::string> names = cells_of(trace_csv_header());
-    ASSERT_GE(names.size(), kLaserColumns.size() + 2);
-    EXPECT_EQ(names.back(), "odometry_glitch");
-    const std::vector<std::string> laser(
-        names.end() - static_cast<std::ptrdiff_t>(kLaserColumns.size()) - 1, names.end() - 1);
+    const auto checks = static_cast<std::ptrdiff_t>(kLoopCheckColumns.size());
+    const auto laser_size = static_cast<std::ptrdiff_t>(kLaserColumns.size());
+    ASSERT_GE(names.size(), kLaserColumns.size() + kLoopCheckColumns.size() + 1);
+    EXPECT_EQ(std::vector<std::string>(names.end() - checks, names.end()), kLoopCheckColumns);
+    const std::vector<std::string> laser(names.end() - checks - laser_size, names.end() - checks);
     EXPECT_EQ(laser, kLaserColumns);
-    EXPECT_EQ(names[names.size() - kLaserColumns.size() - 2], "wheel_left_true");
+    EXPECT_EQ(*(names.end() - checks - laser_size - 1), "wheel_left_true");
 }
 
 LoopSnapshot laser_step(std::uint64_t step) {
@@ -176,6 +180,22 @@ TEST(TraceCsvLaser, TheGlitchFlagMarksTheStepsWhoseCountsWereNotUsed) {
     ASSERT_EQ(rows.size(), 2U);
     EXPECT_EQ(rows[0].at("odometry_glitch"), "0");
     EXPECT_EQ(rows[1].at("odometry_glitch"), "1");
+}
+
+TEST(TraceCsvLaser, ThePredictionColumnSaysHowTheStepPredicted) {
+    const LoopConfig loop;
+    std::ostringstream csv;
+    TraceCsvWriter writer(csv, loop);
+    LoopSnapshot s = laser_step(1);
+    s.predict_status = StepStatus::Applied;
+    writer.on_step(s, GroundTruth{});
+    s.predict_status = StepStatus::AppliedLinearised;
+    writer.on_step(s, GroundTruth{});
+    const auto rows = rows_of(csv.str());
+    ASSERT_EQ(rows.size(), 2U);
+    EXPECT_EQ(rows[0].at("prediction"), to_string(StepStatus::Applied));
+    EXPECT_EQ(rows[1].at("prediction"), to_string(StepStatus::AppliedLinearised));
+    EXPECT_NE(rows[0].at("prediction"), rows[1].at("prediction"));
 }
 
 }  // namespace

@@ -22,6 +22,8 @@ enum class StepStatus : std::uint8_t {
     RejectedNonFinite,  ///< an input or the result was NaN/Inf: x and P unchanged
     RejectedSingular,   ///< the innovation covariance S was not positive definite
     RejectedByGate,     ///< the NIS exceeded the Mahalanobis gate
+    AppliedLinearised,  ///< a UKF prediction done as the EKF's: the sigma points could not be
+                        ///< drawn (n + κ ≤ 0, P or Q not factorisable); x and P did move
 };
 
 const char* to_string(StepStatus status);

@@ -23,10 +23,14 @@
 //                        measurement with angles (otherwise Z̄ = Z₀ + Σ Wᵢ·residual(Zᵢ, Z₀)).
 // State space hooks:     kSize, normalize, difference; optionally weighted_mean.
 //
-// n + κ ≤ 0, or a P that Cholesky refuses, is rejected (RejectedSingular) leaving x and P
-// unchanged; Q may be only semi-definite (a zero noise component is legal). A W₀ < 0
-// (κ < 0) can make the transformed covariance indefinite; the base's conditioning repairs P
-// and an indefinite S is rejected like the EKF's.
+// Prediction without sigma points: when n + κ ≤ 0, Cholesky refuses P, or Q is not positive
+// semi-definite, the transform cannot be taken; the prediction is then the EKF's (linearised,
+// linearised_prediction.hpp) and reported as AppliedLinearised, so the motion is never lost.
+// Q may be only semi-definite (a zero noise component is legal); a non-finite Q is rejected
+// (RejectedNonFinite) as the EKF rejects it. An update that cannot draw sigma points is
+// rejected (RejectedSingular) leaving x and P unchanged: a skipped correction loses nothing. A W₀ <
+// 0 (κ < 0) can make the transformed covariance indefinite; the base's conditioning repairs P and
+// an indefinite S is rejected like the EKF's.
 
 #include <Eigen/Cholesky>
 #include <array>
@@ -36,6 +40,7 @@
 #include "legofeup/core/extended_kalman_filter.hpp"  // StepStatus, MahalanobisGate, UpdateReport
 #include "legofeup/core/filter_base.hpp"
 #include "legofeup/core/lesson_filters_config.hpp"
+#include "legofeup/core/linearised_prediction.hpp"
 #include "legofeup/core/matrix_square_root.hpp"
 
 namespace legofeup {
@@ -89,19 +94,20 @@ class UnscentedKalmanFilter : public FilterBase<StateSpace> {
         using NoiseVector = Eigen::Matrix<double, Nq, 1>;
         using NoiseMatrix = Eigen::Matrix<double, Nq, Nq>;
 
-        const double spread = n + params_.kappa;  // n + κ
-        if (!(spread > 0.0)) {
-            return StepStatus::RejectedSingular;
-        }
         const NoiseMatrix Q = model.noise_covariance();
         if (!Q.allFinite()) {
             return StepStatus::RejectedNonFinite;
         }
-        Covariance root_p;   // √((n+κ)·P)
-        NoiseMatrix root_q;  // √((n+κ)·Q)
-        if (!cholesky_root<kSize>(spread * this->covariance(), root_p)
+        const double spread = n + params_.kappa;  // n + κ
+        Covariance root_p;                        // √((n+κ)·P)
+        NoiseMatrix root_q;                       // √((n+κ)·Q)
+        if (!(spread > 0.0) || !cholesky_root<kSize>(spread * this->covariance(), root_p)
             || !psd_square_root<Nq>(spread * Q, root_q)) {
-            return StepStatus::RejectedSingular;
+            // No sigma points: predict as the EKF does rather than drop the motion.
+            const auto linearised =
+                linearised_prediction<StateSpace>(model, this->state(), this->covariance());
+            const StepStatus status = this->commit(linearised.state, linearised.covariance);
+            return status == StepStatus::Applied ? StepStatus::AppliedLinearised : status;
         }
 
         // Eq. 11–12 on the augmented state: Y₀ = f(X̂, 0); ±columns of √P perturb X,
