@@ -20,12 +20,15 @@
 #include <cmath>
 
 #include "legofeup/lessons/grading.hpp"
+#include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/submission.hpp"
 #include "legofeup/report/student_report.hpp"
 #include "legofeup/ui/lesson/lesson_actions.hpp"
 #include "legofeup/ui/lesson/lesson_panel.hpp"
 #include "legofeup/ui/lesson/lesson_progress.hpp"
+#include "legofeup/ui/lesson/shown_run.hpp"
 #include "legofeup/ui/lesson/step_view.hpp"
+#include "legofeup/ui/session/run_samples.hpp"
 #include "legofeup/ui/session/session.hpp"
 #include "legofeup/ui/window/app_settings.hpp"
 #include "legofeup/ui/window/main_window.hpp"
@@ -313,6 +316,36 @@ class LessonPanelTest : public QObject {
                                       .arg(QString::number(rerun_inside, 'g', 4))),
                  qPrintable(checks));
         QVERIFY2(checks.contains(QStringLiteral("Judged on the run shown")), qPrintable(checks));
+    }
+
+    void aRunWithoutTheTruePoseSaysWhichChecksItCannotJudge() {
+        // Step a cut short, its truth withheld as a real NXT's link withholds it: its check on
+        // updates_applied is judged, the one on final_position_error_m cannot be.
+        const lessons::Lesson& lesson = lessons::legofeup_lesson();
+        const lessons::LessonStep& step = *lesson.find_step("a");
+        SampleCollector collector;
+        lessons::run_lockstep(lessons::resolve(short_run(step.config)), &collector);
+        ShownRun shown;
+        for (RunSample sample : collector.take()) {
+            sample.truth.reset();
+            shown.add(sample);
+        }
+        LessonProgress progress(lesson);
+        progress.setOutcome(shown.outcome(step, step.config, sim::WorldSpec{}));
+        StepView view;
+        view.resize(430, 900);
+        view.showStep(step, progress);
+        view.show();
+        const QString checks = view.findChild<QLabel*>(QStringLiteral("stepChecks"))->text();
+        QCOMPARE(checks.count(QStringLiteral("not judged")), 1);
+        QVERIFY2(checks.contains(QStringLiteral("This check needs the true pose, which the NXT "
+                                                "does not give")),
+                 qPrintable(checks));
+        QCOMPARE(checks.count(QStringLiteral("✓ passed")), 1);
+        QCOMPARE(checks.count(QStringLiteral("failed")), 0);
+        QCOMPARE(step_state_text(progress, "a"),
+                 QStringLiteral("✓ done · checks 1/1 · 1 not judged"));
+        testing::save_screenshot(view, "lesson-checks-without-truth");
     }
 
     void applyAndRunAppliesThePresetAndStartsTheStep() {
