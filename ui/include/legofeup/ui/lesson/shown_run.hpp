@@ -39,6 +39,8 @@ class ShownRun {
     std::uint64_t steps() const { return steps_; }
     /// The run as the CLI's runner reports one: metrics, routine finished (the last step's
     /// routine), frames missing, steps without a truth and the wall time from first to last.
+    /// A step whose truth had not arrived yet carries the last one (LiveRun stands it in, as
+    /// run_with_link does) and counts as with a truth here: the sample does not say which.
     lessons::RunResult result() const;
     /// `step`'s outcome on this run: summary.json's metrics, the checks evaluated on them, the
     /// plotted steps; `config` (the configuration the run ended with) and `world` are recorded
