@@ -35,7 +35,7 @@ laser-lesson.png               app view/plotTab=5                   --experiment
 laser-twin-hall.png            app -                                --experiment laser:c --speed 2 --start --screenshot-at 45
 laser-far-kidnap.png           app -                                --experiment laser:d --speed 2 --start --screenshot-at 53
 nxt-connect.png                test ui_connect_dialog_test scanningWithoutBlueZSaysSoAtOnceAndReturns
-lesson-panel.png               test ui_lesson_panel_test theConclusionIsHiddenUntilTheRunFinishesThenShownWithTheCliNumbers
+lesson-panel.png               test ui_lesson_panel_test theConclusionIsHiddenUntilTheRunFinishesThenShownWithTheRunsOwnNumbers
 refilter.png                   test ui_refilter_dialog_test changingQGivesASecondEstimateOnTheSameReadings
 ir-calibration.png             test ui_calibration_dialogs_test theIrFitIsTheLibrarysFitAndIsShown
 umbmark.png                    test ui_calibration_dialogs_test umbmarkIsTheLibrarysAndIsSavedIntoTheProfile

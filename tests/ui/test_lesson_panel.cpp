@@ -1,7 +1,7 @@
 // The Lesson dock in the window, driven as students drive it (QtTest, offscreen): the steps
-// and their states, a step's conclusion hidden until its run finished (the checks then with
-// the numbers legofeup-cli would give), answers saved, reopened and kept across restarts, the
-// report exported, a teacher's lesson opened and a broken one refused.
+// and their states, a step's conclusion hidden until its run finished (the checks then judged
+// on the run shown, even one tuned half-way, not on a re-run), answers saved, reopened and kept
+// across restarts, the report exported, a teacher's lesson opened and a broken one refused.
 
 #include <QDockWidget>
 #include <QFile>
@@ -17,14 +17,18 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <cmath>
 
 #include "legofeup/lessons/grading.hpp"
+#include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/submission.hpp"
 #include "legofeup/report/student_report.hpp"
 #include "legofeup/ui/lesson/lesson_actions.hpp"
 #include "legofeup/ui/lesson/lesson_panel.hpp"
 #include "legofeup/ui/lesson/lesson_progress.hpp"
+#include "legofeup/ui/lesson/shown_run.hpp"
 #include "legofeup/ui/lesson/step_view.hpp"
+#include "legofeup/ui/session/run_samples.hpp"
 #include "legofeup/ui/session/session.hpp"
 #include "legofeup/ui/window/app_settings.hpp"
 #include "legofeup/ui/window/main_window.hpp"
@@ -40,6 +44,41 @@ namespace {
 constexpr int kPatienceMs = 30000;
 
 using testing::short_run;
+
+/// A run long enough to be tuned half-way by a test polling every few milliseconds.
+constexpr double kTunedRunSeconds = 8.0;
+/// Shares of steps that differ by more than this are told apart (one step in 160 is 0.006).
+constexpr double kDistinct = 0.1;
+
+/// √(mean |x̂ − x|²) over the steps with a truth: the position error, by hand.
+double rms_position_error(const std::vector<RunSample>& samples) {
+    double sum = 0.0;
+    int steps = 0;
+    for (const RunSample& sample : samples) {
+        if (sample.truth) {
+            const double dx = sample.snapshot.estimate(0) - sample.truth->pose.x;
+            const double dy = sample.snapshot.estimate(1) - sample.truth->pose.y;
+            sum += dx * dx + dy * dy;
+            ++steps;
+        }
+    }
+    return std::sqrt(sum / steps);
+}
+
+/// Share of the steps with a truth whose NEES lies in χ²(3)'s 95 % interval, by hand.
+double inside_fraction(const std::vector<RunSample>& samples) {
+    constexpr double kLower = 0.2158;  // χ²(3) at 2.5 % and 97.5 % (tables)
+    constexpr double kUpper = 9.3484;
+    int inside = 0;
+    int steps = 0;
+    for (const RunSample& sample : samples) {
+        if (sample.truth) {
+            inside += sample.nees >= kLower && sample.nees <= kUpper ? 1 : 0;
+            ++steps;
+        }
+    }
+    return static_cast<double>(inside) / steps;
+}
 
 void write_file(const QString& path, const QByteArray& text) {
     QFile file(path);
@@ -162,7 +201,7 @@ class LessonPanelTest : public QObject {
         QVERIFY(!panel().stepView().expectationShown());
     }
 
-    void theConclusionIsHiddenUntilTheRunFinishesThenShownWithTheCliNumbers() {
+    void theConclusionIsHiddenUntilTheRunFinishesThenShownWithTheRunsOwnNumbers() {
         const lessons::Lesson& lesson = lessons::legofeup_lesson();
         const lessons::LessonStep& step = *lesson.find_step("b");
         QVERIFY(panel().showStep(QStringLiteral("b")));
@@ -200,20 +239,11 @@ class LessonPanelTest : public QObject {
         QCOMPARE(checks.count(QStringLiteral("passed")) + checks.count(QStringLiteral("failed")),
                  total);
 
-        // The numbers are the CLI's: the same lockstep run of the configuration as run.
-        const report::StepOutcome cli = report::run_step(step, session_->config());
-        nlohmann::json gui_metrics = outcome->metrics;
-        nlohmann::json cli_metrics = cli.metrics;
-        for (const auto& [name, value] : cli.metrics.items()) {
-            if (lessons::is_machine_dependent_metric(name)) {  // wall-clock time
-                gui_metrics.erase(name);
-                cli_metrics.erase(name);
-            }
-        }
-        QVERIFY2(gui_metrics == cli_metrics, gui_metrics.dump().c_str());
-        for (std::size_t i = 0; i < cli.checks.size(); ++i) {
-            QCOMPARE(outcome->checks[i].passed, cli.checks[i].passed);
-        }
+        // The numbers are the run shown's: every step the window drew, measured by hand.
+        QCOMPARE(outcome->metrics["steps"].get<std::size_t>(),
+                 session_->history().samples().size());
+        QCOMPARE(outcome->metrics["rms_position_error_m"].get<double>(),
+                 rms_position_error(session_->history().samples()));
         // Another step is still folded.
         QVERIFY(panel().showStep(QStringLiteral("c")));
         QVERIFY(!panel().stepView().expectationShown());
@@ -230,6 +260,92 @@ class LessonPanelTest : public QObject {
                  QStringLiteral("It snaps onto the wall and the ellipse collapses across it."));
             save_screenshot_of_panel("lesson-panel", expectation);
         }
+    }
+
+    void aStepTunedHalfWayIsJudgedOnTheRunShownNotOnAReRunOfItsLastTuning() {
+        // Step f for 8 s in a straight line, its Q made a million times smaller half-way (step
+        // d's 1e-12: the filter stops believing it can drift). Slow enough (2×) to change it
+        // near the middle.
+        const lessons::LessonStep& step = *lessons::legofeup_lesson().find_step("f");
+        QVERIFY(panel().showStep(QStringLiteral("f")));
+        lessons::RunConfig config = short_run(step.config);
+        config.duration = kTunedRunSeconds;
+        QVERIFY(session_->setConfig(config).isEmpty());
+        LinkChoice slower = session_->linkChoice();
+        slower.speed = 2.0;
+        session_->setLinkChoice(slower);
+        QSignalSpy shown(&panel(), &LessonPanel::stepOutcomeShown);
+        session_->start();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !session_->history().empty()
+                && session_->history().latest().snapshot.time >= kTunedRunSeconds / 2,
+            kPatienceMs);
+        const double tuned_at = session_->history().latest().snapshot.time;
+        QVERIFY2(tuned_at < 0.75 * kTunedRunSeconds, qPrintable(QString::number(tuned_at)));
+        lessons::RunConfig tuned = session_->config();
+        tuned.filter.q11 = 1e-12;
+        tuned.filter.q22 = 1e-12;
+        QVERIFY(session_->setConfig(tuned).isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(!shown.isEmpty(), kPatienceMs);
+        QCOMPARE(panel().progress().state("f"), StepState::Done);
+
+        // The run shown, measured by hand from the window's own history…
+        const std::vector<RunSample>& samples = session_->history().samples();
+        const double shown_rms = rms_position_error(samples);
+        const double shown_inside = inside_fraction(samples);
+        // …and what a lockstep re-run of the configuration it ended with gives.
+        const report::StepOutcome rerun = report::run_step(step, session_->config());
+        const double rerun_inside = rerun.metrics["nees_inside_fraction"].get<double>();
+        qInfo("tuned at %.2f s; NEES inside fraction: shown %.4f, re-run %.4f; rms %.4f vs %.4f",
+              tuned_at, shown_inside, rerun_inside, shown_rms,
+              rerun.metrics["rms_position_error_m"].get<double>());
+        QVERIFY2(std::abs(shown_inside - rerun_inside) > kDistinct,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(shown_inside).arg(rerun_inside)));
+
+        // The panel judged the run shown.
+        const report::StepOutcome* outcome = panel().progress().outcome("f");
+        QVERIFY(outcome != nullptr);
+        QCOMPARE(outcome->metrics["steps"].get<std::size_t>(), samples.size());
+        QCOMPARE(outcome->metrics["rms_position_error_m"].get<double>(), shown_rms);
+        QCOMPARE(outcome->metrics["nees_inside_fraction"].get<double>(), shown_inside);
+        const QString checks = window_->findChild<QLabel*>(QStringLiteral("stepChecks"))->text();
+        const auto shown_text =
+            QStringLiteral("nees_inside_fraction = %1").arg(QString::number(shown_inside, 'g', 4));
+        QVERIFY2(checks.contains(shown_text), qPrintable(checks));
+        QVERIFY2(!checks.contains(QStringLiteral("nees_inside_fraction = %1")
+                                      .arg(QString::number(rerun_inside, 'g', 4))),
+                 qPrintable(checks));
+        QVERIFY2(checks.contains(QStringLiteral("Judged on the run shown")), qPrintable(checks));
+    }
+
+    void aRunWithoutTheTruePoseSaysWhichChecksItCannotJudge() {
+        // Step a cut short, its truth withheld as a real NXT's link withholds it: its check on
+        // updates_applied is judged, the one on final_position_error_m cannot be.
+        const lessons::Lesson& lesson = lessons::legofeup_lesson();
+        const lessons::LessonStep& step = *lesson.find_step("a");
+        SampleCollector collector;
+        lessons::run_lockstep(lessons::resolve(short_run(step.config)), &collector);
+        ShownRun shown;
+        for (RunSample sample : collector.take()) {
+            sample.truth.reset();
+            shown.add(sample);
+        }
+        LessonProgress progress(lesson);
+        progress.setOutcome(shown.outcome(step, step.config, sim::WorldSpec{}));
+        StepView view;
+        view.resize(430, 900);
+        view.showStep(step, progress);
+        view.show();
+        const QString checks = view.findChild<QLabel*>(QStringLiteral("stepChecks"))->text();
+        QCOMPARE(checks.count(QStringLiteral("not judged")), 1);
+        QVERIFY2(checks.contains(QStringLiteral("This check needs the true pose, which the NXT "
+                                                "does not give")),
+                 qPrintable(checks));
+        QCOMPARE(checks.count(QStringLiteral("✓ passed")), 1);
+        QCOMPARE(checks.count(QStringLiteral("failed")), 0);
+        QCOMPARE(step_state_text(progress, "a"),
+                 QStringLiteral("✓ done · checks 1/1 · 1 not judged"));
+        testing::save_screenshot(view, "lesson-checks-without-truth");
     }
 
     void applyAndRunAppliesThePresetAndStartsTheStep() {

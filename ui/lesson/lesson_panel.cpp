@@ -44,14 +44,20 @@ QString built_in_key(const std::string& id) {
 
 /// One line per step: its state's mark, id and title, and once run the checks passed.
 QString step_label(const lessons::LessonStep& step, const LessonProgress& progress) {
-    static const std::array<QString, 4> kMarks = {QStringLiteral("○"), QStringLiteral("▶"),
-                                                  QStringLiteral("⋯"), QStringLiteral("✓")};
+    static const std::array<QString, 3> kMarks = {QStringLiteral("○"), QStringLiteral("▶"),
+                                                  QStringLiteral("✓")};
     const StepState state = progress.state(step.id);
     QString label = QStringLiteral("%1  %2) %3")
                         .arg(kMarks.at(static_cast<std::size_t>(state)),
                              QString::fromStdString(step.id), QString::fromStdString(step.title));
-    if (const auto [passed, total] = progress.checksPassed(step.id); total > 0) {
-        label += QObject::tr("  — checks %1/%2").arg(passed).arg(total);
+    if (const auto [passed, judged] = progress.checksPassed(step.id); judged > 0) {
+        label += QObject::tr("  — checks %1/%2").arg(passed).arg(judged);
+    }
+    if (const int not_judged = progress.checksNotJudged(step.id); not_judged > 0) {
+        label +=
+            not_judged == 1
+                ? QObject::tr("  — 1 check not judged without the true pose")
+                : QObject::tr("  — %1 checks not judged without the true pose").arg(not_judged);
     }
     return label;
 }
@@ -156,27 +162,26 @@ LessonPanel::LessonPanel(Session& session, QWidget* parent) : QWidget(parent), s
                 progress_->markAbandoned(id.toStdString());
                 refresh_step(id);
             });
-    connect(tracker_, &StepRunTracker::stepChecking, this, [this, refresh_step](const QString& id) {
-        progress_->markChecking(id.toStdString());
-        refresh_step(id);
-    });
     connect(tracker_, &StepRunTracker::outcomeReady, this,
             [this, refresh_step](const report::StepOutcome& outcome) {
                 const QString id = QString::fromStdString(outcome.step_id);
                 progress_->setOutcome(outcome);
                 refresh_step(id);
-                const auto [passed, total] = progress_->checksPassed(outcome.step_id);
-                emit note(tr("Step %1 done: %2 of %3 checks passed; its conclusion is shown")
-                              .arg(id)
-                              .arg(passed)
-                              .arg(total));
+                const auto [passed, judged] = progress_->checksPassed(outcome.step_id);
+                const int not_judged = progress_->checksNotJudged(outcome.step_id);
+                emit note(not_judged == 0
+                              ? tr("Step %1 done: %2 of %3 checks passed on the run shown; its "
+                                   "conclusion is shown.")
+                                    .arg(id)
+                                    .arg(passed)
+                                    .arg(judged)
+                              : tr("Step %1 done: %2 of %3 checks passed on the run shown, %4 not "
+                                   "judged without the true pose; its conclusion is shown.")
+                                    .arg(id)
+                                    .arg(passed)
+                                    .arg(judged)
+                                    .arg(not_judged));
                 emit stepOutcomeShown(id);
-            });
-    connect(tracker_, &StepRunTracker::outcomeFailed, this,
-            [this, refresh_step](const QString& id, const QString& reason) {
-                progress_->markAbandoned(id.toStdString());
-                refresh_step(id);
-                emit note(tr("Step %1 could not be checked: %2").arg(id, reason));
             });
 
     // The lesson used last, if it still reads; otherwise the built-in one.

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "legofeup/lessons/config_file.hpp"
+#include "legofeup/ui/lesson/shown_run.hpp"
 
 namespace legofeup::ui {
 
@@ -28,15 +29,22 @@ std::pair<int, int> LessonProgress::checksPassed(const std::string& step_id) con
     const auto passed =
         std::count_if(ran->checks.begin(), ran->checks.end(),
                       [](const lessons::CheckResult& check) { return check.passed; });
-    return {static_cast<int>(passed), static_cast<int>(ran->checks.size())};
+    const int judged = static_cast<int>(ran->checks.size()) - checksNotJudged(step_id);
+    return {static_cast<int>(passed), judged};
+}
+
+int LessonProgress::checksNotJudged(const std::string& step_id) const {
+    const report::StepOutcome* ran = outcome(step_id);
+    if (ran == nullptr) {
+        return 0;
+    }
+    return static_cast<int>(std::count_if(
+        ran->checks.begin(), ran->checks.end(),
+        [&](const lessons::CheckResult& check) { return truth_missing(check, ran->metrics); }));
 }
 
 void LessonProgress::markRunning(const std::string& step_id) {
     steps_[step_id].state = StepState::Running;
-}
-
-void LessonProgress::markChecking(const std::string& step_id) {
-    steps_[step_id].state = StepState::Checking;
 }
 
 void LessonProgress::markAbandoned(const std::string& step_id) {

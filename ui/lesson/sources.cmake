@@ -5,6 +5,7 @@ list(APPEND LEGOFEUP_UI_SOURCES
     lesson/lesson_actions.cpp
     lesson/lesson_panel.cpp
     lesson/lesson_progress.cpp
+    lesson/shown_run.cpp
     lesson/step_membership.cpp
     lesson/step_run_tracker.cpp
     lesson/step_view.cpp

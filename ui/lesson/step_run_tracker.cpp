@@ -1,8 +1,5 @@
 #include "legofeup/ui/lesson/step_run_tracker.hpp"
 
-#include <QtConcurrent/QtConcurrentRun>
-#include <exception>
-
 #include "legofeup/ui/lesson/step_membership.hpp"
 #include "legofeup/ui/session/session.hpp"
 
@@ -11,14 +8,7 @@ namespace legofeup::ui {
 StepRunTracker::StepRunTracker(Session& session, QObject* parent)
     : QObject(parent), session_(session) {
     connect(&session_, &Session::phaseChanged, this, &StepRunTracker::phaseChanged);
-}
-
-StepRunTracker::~StepRunTracker() {
-    // The workers hold their own copies; this only joins them before the watchers go.
-    for (auto* watcher : findChildren<QFutureWatcher<Computed>*>()) {
-        watcher->disconnect(this);
-        watcher->waitForFinished();
-    }
+    connect(&session_, &Session::samplesAppended, this, &StepRunTracker::samplesAppended);
 }
 
 void StepRunTracker::setStep(std::shared_ptr<const lessons::Lesson> lesson,
@@ -41,10 +31,22 @@ void StepRunTracker::abandonRun() {
     }
 }
 
+void StepRunTracker::samplesAppended(int first, int count) {
+    if (running_.empty()) {
+        return;
+    }
+    const std::vector<RunSample>& samples = session_.history().samples();
+    for (int i = first; i < first + count; ++i) {
+        shown_.add(samples[static_cast<std::size_t>(i)]);
+    }
+}
+
 void StepRunTracker::phaseChanged(RunPhase phase) {
     switch (phase) {
         case RunPhase::Connecting:
             abandonRun();  // a new run replaces one that had not finished
+            // The session has just restarted its history: the run's steps come from here on.
+            shown_ = ShownRun();
             if (const lessons::LessonStep* step = selectedStep();
                 step != nullptr && is_step_configuration(session_.config(), *step)) {
                 running_ = selected_;
@@ -55,6 +57,7 @@ void StepRunTracker::phaseChanged(RunPhase phase) {
         case RunPhase::Paused:
             return;
         case RunPhase::Finished:
+            // The session appends a run's last steps before it reports the phase they led to.
             if (const lessons::LessonStep* step =
                     lesson_ == nullptr ? nullptr : lesson_->find_step(running_)) {
                 if (!is_step_configuration(session_.config(), *step)) {
@@ -62,7 +65,8 @@ void StepRunTracker::phaseChanged(RunPhase phase) {
                     return;
                 }
                 running_.clear();
-                check(*step);
+                emit outcomeReady(
+                    shown_.outcome(*step, session_.config(), session_.resolved().world));
             }
             return;
         case RunPhase::Idle:
@@ -71,41 +75,6 @@ void StepRunTracker::phaseChanged(RunPhase phase) {
             abandonRun();
             return;
     }
-}
-
-void StepRunTracker::check(const lessons::LessonStep& step) {
-    emit stepChecking(QString::fromStdString(step.id));
-    ++checking_;
-    auto* watcher = new QFutureWatcher<Computed>(this);
-    connect(watcher, &QFutureWatcher<Computed>::finished, this, [this, watcher] {
-        --checking_;
-        computed(watcher->result());
-        watcher->deleteLater();
-    });
-    // Copies only: the worker never touches what the GUI thread may change meanwhile.
-    watcher->setFuture(
-        QtConcurrent::run([lesson = lesson_, step, config = session_.config()]() -> Computed {
-            Computed result{lesson, {}, {}};
-            try {
-                result.outcome = report::run_step(step, config);
-            } catch (const std::exception& error) {
-                result.error = QString::fromUtf8(error.what());
-            }
-            result.outcome.step_id = step.id;
-            return result;
-        }));
-}
-
-void StepRunTracker::computed(const Computed& result) {
-    if (result.lesson != lesson_) {
-        return;  // the lesson changed meanwhile: the outcome belongs to no step shown
-    }
-    const QString step_id = QString::fromStdString(result.outcome.step_id);
-    if (!result.error.isEmpty()) {
-        emit outcomeFailed(step_id, result.error);
-        return;
-    }
-    emit outcomeReady(result.outcome);
 }
 
 }  // namespace legofeup::ui

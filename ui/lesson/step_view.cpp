@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "legofeup/ui/lesson/lesson_progress.hpp"
+#include "legofeup/ui/lesson/shown_run.hpp"
 #include "legofeup/ui/panels/message_line.hpp"
 
 namespace legofeup::ui {
@@ -73,12 +74,15 @@ QString step_state_text(const LessonProgress& progress, const std::string& step_
             return QObject::tr("○ not run");
         case StepState::Running:
             return QObject::tr("▶ running…");
-        case StepState::Checking:
-            return QObject::tr("⋯ checking…");
         case StepState::Done: {
-            const auto [passed, total] = progress.checksPassed(step_id);
-            return total == 0 ? QObject::tr("✓ done")
-                              : QObject::tr("✓ done · checks %1/%2").arg(passed).arg(total);
+            const auto [passed, judged] = progress.checksPassed(step_id);
+            QString text = judged == 0
+                               ? QObject::tr("✓ done")
+                               : QObject::tr("✓ done · checks %1/%2").arg(passed).arg(judged);
+            if (const int not_judged = progress.checksNotJudged(step_id); not_judged > 0) {
+                text += QObject::tr(" · %1 not judged").arg(not_judged);
+            }
+            return text;
         }
     }
     return {};
@@ -125,9 +129,10 @@ StepView::StepView(QWidget* parent) : QWidget(parent) {
     checks_->setWordWrap(true);
     checks_->setTextFormat(Qt::RichText);
     checks_->setToolTip(
-        tr("Checked on a lockstep re-run of the configuration as run, with its seed — the run "
-           "legofeup-cli report makes — so the panel, the report and the CLI show the same "
-           "numbers."));
+        tr("Judged on the run shown, from its own steps: tuned while it ran, paused or driven "
+           "by keyboard for a while, it is the trajectory the window drew. legofeup-cli report "
+           "re-runs a configuration in lockstep instead, and legofeup-cli grade does so on "
+           "seeds the students never saw."));
     layout->addWidget(checks_);
 
     layout->addWidget(heading(this, tr("Expected conclusion")));
@@ -206,11 +211,23 @@ void StepView::refresh(const LessonProgress& progress) {
         text += tr("<p><i>Checked once the run has finished.</i></p>");
     } else {
         for (const lessons::CheckResult& result : outcome->checks) {
+            if (truth_missing(result, outcome->metrics)) {
+                // Nothing measured it: say why rather than fail it (or judge another run).
+                text += check_line(QStringLiteral("<b>%1</b>").arg(tr("— not judged")),
+                                   result.check, QString::fromStdString(result.check.expression));
+                text += QStringLiteral("<p style=\"margin-top:0\"><i>%1</i></p>")
+                            .arg(tr("This check needs the true pose, which the NXT does not "
+                                    "give: only a simulator knows where the robot really is.")
+                                     .toHtmlEscaped());
+                continue;
+            }
             const QString mark = QStringLiteral("<span style=\"color:%1\"><b>%2</b></span>")
                                      .arg(outcome_colour(*this, result.passed),
                                           result.passed ? tr("✓ passed") : tr("✗ failed"));
             text += check_line(mark, result.check, QString::fromStdString(result.message));
         }
+        text +=
+            QStringLiteral("<p><i>%1</i></p>").arg(tr("Judged on the run shown.").toHtmlEscaped());
     }
     checks_->setText(text);
 

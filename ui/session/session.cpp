@@ -486,8 +486,11 @@ void Session::drain() {
     if (!run_) {
         return;
     }
-    std::vector<RunSample> batch = run_->take_samples();
+    // The status first: the worker publishes a run's last step before it reports the phase
+    // that step led to (Finished), so every step of a phase read here is in this batch or an
+    // earlier one — the views and the lesson's checks have the whole run when it ends.
     const LiveRunStatus status = run_->status();
+    std::vector<RunSample> batch = run_->take_samples();
     for (const std::string& note : run_->take_notes()) {
         emit problem(QString::fromStdString(note));
     }

@@ -17,10 +17,9 @@
 namespace legofeup::ui {
 
 enum class StepState : std::uint8_t {
-    NotRun,    ///< no finished run yet
-    Running,   ///< its run is going (a previous outcome, if any, is kept until it finishes)
-    Checking,  ///< the run finished; its outcome is being computed
-    Done,      ///< ran: outcome() holds the metrics and checks
+    NotRun,   ///< no finished run yet
+    Running,  ///< its run is going (a previous outcome, if any, is kept until it finishes)
+    Done,     ///< ran: outcome() holds the metrics and checks
 };
 
 /// step id → question id → answer, as typed.
@@ -40,11 +39,13 @@ class LessonProgress {
     const report::StepOutcome* outcome(const std::string& step_id) const;
     /// Whether the step's conclusion may be shown: once it has run.
     bool revealed(const std::string& step_id) const { return outcome(step_id) != nullptr; }
-    /// Checks passed and checks in all of the latest outcome (0/0 before any).
+    /// Checks passed and checks judged in the latest outcome (0/0 before any): a check whose
+    /// metric needs the true pose the run did not have (a real NXT) is not judged.
     std::pair<int, int> checksPassed(const std::string& step_id) const;
+    /// Checks of the latest outcome that could not be judged for want of the true pose.
+    int checksNotJudged(const std::string& step_id) const;
 
     void markRunning(const std::string& step_id);
-    void markChecking(const std::string& step_id);
     /// The run ended without finishing its routine (stopped, failed, reset): back to Done if
     /// an earlier run finished, else NotRun.
     void markAbandoned(const std::string& step_id);
