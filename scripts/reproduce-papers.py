@@ -54,9 +54,14 @@ def arguments():
 
 
 def measure_all(args, seeds, out_dir):
-    cases = sorted(set().union(*(section.cases() for section in rows.SECTIONS)))
+    cases = set().union(*(section.cases() for section in rows.SECTIONS))
+    timed = set().union(*(section.timed_cases() for section in rows.SECTIONS))
     progress = (lambda line: None) if args.quiet else (lambda line: print(line, file=sys.stderr))
-    runs = run_steps(args.cli, cases, seeds, out_dir, args.jobs, progress)
+    runs = run_steps(args.cli, sorted(cases - timed), seeds, out_dir, args.jobs, progress)
+    # The steps whose timings the page shows run one at a time, after the others: a run
+    # beside them would share their CPU and inflate one filter's time or the other's.
+    runs.update(run_steps(args.cli, sorted(timed), seeds, os.path.join(out_dir, "timed"), 1,
+                          progress))
     return {section.key: page.measure_section(section, runs, seeds) for section in rows.SECTIONS}
 
 

@@ -11,6 +11,7 @@ and everything outside the markers is the page's hand-written text, left as it i
 """
 
 import re
+import statistics
 from dataclasses import dataclass
 
 from .runs import MeasurementError
@@ -27,18 +28,20 @@ class PageError(Exception):
 
 @dataclass
 class Measured:
-    """A row's numbers: mean, min, max over the seeds it is defined on, or a count."""
+    """A row's numbers: mean (or median), min, max over the seeds it is defined on, or a
+    count."""
     numbers: tuple  # (mean, min, max), or (count,) for a counting row, or () if never
     defined: int  # on how many seeds the measure had a value
     seeds: int
+    median: bool = False  # numbers[0] is the median, not the mean
 
     def cell(self, counts):
         if counts:
             return f"{format_number(self.numbers[0])} of {self.seeds} seeds"
         if not self.numbers:
             return f"never (0 of {self.seeds} seeds)"
-        mean, low, high = (format_number(n) for n in self.numbers)
-        text = f"{mean} [{low}, {high}]"
+        central, low, high = (format_number(n) for n in self.numbers)
+        text = f"{'median ' if self.median else ''}{central} [{low}, {high}]"
         if self.defined < self.seeds:
             text += f" on {self.defined} of {self.seeds} seeds"
         return text
@@ -62,8 +65,8 @@ def parse_cell(text):
         return (float(m[1]),), int(m[2]), int(m[2])
     if m := re.fullmatch(r"never \(0 of (\d+) seeds\)", text):
         return (), 0, int(m[1])
-    if m := re.fullmatch(rf"({NUMBER}) \[({NUMBER}), ({NUMBER})\]( on (\d+) of (\d+) seeds)?",
-                         text):
+    if m := re.fullmatch(rf"(?:median )?({NUMBER}) \[({NUMBER}), ({NUMBER})\]"
+                         rf"( on (\d+) of (\d+) seeds)?", text):
         numbers = (float(m[1]), float(m[2]), float(m[3]))
         return (numbers, int(m[5]), int(m[6])) if m[4] else (numbers, None, None)
     return None
@@ -83,8 +86,8 @@ def measure(row, runs, seeds):
         return Measured((sum(values),), len(seeds), len(seeds))
     if not values:
         return Measured((), 0, len(seeds))
-    return Measured((sum(values) / len(values), min(values), max(values)), len(values),
-                    len(seeds))
+    central = statistics.median(values) if row.median else sum(values) / len(values)
+    return Measured((central, min(values), max(values)), len(values), len(seeds), row.median)
 
 
 def table(section, measured, seeds):
@@ -168,7 +171,6 @@ def compare(path, section, stated, measured):
     """The failures of one section: a list of messages naming the number, what the page
     states, what was measured and the tolerance."""
     failures = []
-    names = ("mean", "min", "max")
     for row in section.rows:
         key = (row.step, row.quantity)
         now = measured[key]
@@ -191,7 +193,8 @@ def compare(path, section, stated, measured):
         if len(numbers) != len(now.numbers):
             failures.append(f"{where}: stated '{cell}', measured {now.cell(row.counts)}")
             continue
-        for name, old, new in zip(("count",) if row.counts else names, numbers, now.numbers):
+        names = ("count",) if row.counts else ("median" if row.median else "mean", "min", "max")
+        for name, old, new in zip(names, numbers, now.numbers):
             if not within(old, new, tolerance):
                 failures.append(f"{where}, {name}: the page states {format_number(old)}, "
                                 f"measured {format_number(new)} (tolerance {tolerance})")

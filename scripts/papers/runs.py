@@ -92,6 +92,7 @@ def run_steps(cli, cases, seeds, out_dir, jobs, progress):
     """Runs every case, a (step, overlay) pair, on every seed, `jobs` at a time; an overlay
     is TOML text applied over the step's preset (`-c FILE`), "" for none. Returns
     {(step, overlay, seed): Run}."""
+    os.makedirs(out_dir, exist_ok=True)
     overlay_files = {}
     for number, (_, overlay) in enumerate(cases):
         if overlay and overlay not in overlay_files:

@@ -67,6 +67,7 @@ class Numbers(unittest.TestCase):
         self.assertEqual(page.parse_cell("0.3 [0.3, 0.3] on 4 of 10 seeds"),
                          ((0.3, 0.3, 0.3), 4, 10))
         self.assertEqual(page.parse_cell("never (0 of 10 seeds)"), ((), 0, 10))
+        self.assertEqual(page.parse_cell("median 2.9 [1.1, 39]"), ((2.9, 1.1, 39.0), None, None))
         self.assertIsNone(page.parse_cell("about 3"))
 
     def test_tolerances(self):
@@ -89,6 +90,10 @@ class Check(unittest.TestCase):
         self.assertEqual(values[("x:a", "time (s)")].numbers, (2.5, 1.0, 4.0))
         self.assertEqual(values[("x:a", "time (s)")].defined, 2)
         self.assertEqual(values[("x:a", "seeds lost")].numbers, (2.0,))
+        median_row = Row("x:a", "median error (m)", "error", median=True)
+        runs = {("x:a", "", seed): FakeRun({"error": e}) for seed, e in ((1, 0.5), (2, 2.0),
+                                                                          (3, 30.0))}
+        self.assertEqual(page.measure(median_row, runs, [1, 2, 3]).numbers, (2.0, 0.5, 30.0))
 
     def test_a_written_page_passes_and_keeps_the_text_around(self):
         values = measured((0.5, 2.0, 3.5))
