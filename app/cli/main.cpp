@@ -9,6 +9,7 @@
 #include "grade_command.hpp"
 #include "legofeup/version.hpp"
 #include "lesson_commands.hpp"
+#include "measure_ir_command.hpp"
 #include "refilter_command.hpp"
 #include "report_command.hpp"
 
@@ -58,6 +59,8 @@ int main(int argc, char** argv) {
 
     CalibrateOptions calibrate;
     add_calibrate_subcommands(app, calibrate);
+    MeasureIrOptions measure_ir;
+    add_measure_ir_subcommand(app, measure_ir);
     LessonOptions lesson;
     add_lesson_subcommands(app, lesson);
     AnalysisOptions analysis;
@@ -78,6 +81,9 @@ int main(int argc, char** argv) {
     }
     if (calibrate.requested()) {
         return calibrate_command(calibrate);
+    }
+    if (measure_ir.requested()) {
+        return measure_ir_command(measure_ir);
     }
     if (lesson.requested()) {
         return lesson_command(lesson);

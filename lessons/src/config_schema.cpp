@@ -838,6 +838,21 @@ std::vector<Setting> make_settings() {
     physical(
         "ir_noise", "σ of Gaussian noise on each IR distance, m",
         [](auto& c) -> auto& { return c.physical.ir_noise; });
+    s.push_back(choice(
+        "simulator.ir_model", "simulator.ir_model",
+        "the IR sensors: ideal (the filter's curve, noise constant in metres) or realistic "
+        "(each sensor its own curve from the seed, noise on the output)",
+        {sim::IrSensorModel::Ideal, sim::IrSensorModel::Realistic},
+        sim::ir_sensor_model_from_string, [](auto& c) -> auto& { return c.physical.ir_model; }));
+    physical(
+        "ir_noise_distance", "realistic IR: the distance at which the noise is ir_noise, m",
+        [](auto& c) -> auto& { return c.physical.ir_noise_distance; });
+    physical(
+        "ir_gain_spread", "realistic IR: σ of each sensor's output gain (data sheet: 0.044)",
+        [](auto& c) -> auto& { return c.physical.ir_gain_spread; });
+    physical(
+        "ir_offset_spread", "realistic IR: σ of each sensor's output offset, A/D counts",
+        [](auto& c) -> auto& { return c.physical.ir_offset_spread; });
     physical(
         "ir_period", "IR update period (value held in between), s",
         [](auto& c) -> auto& { return c.physical.ir_period; });

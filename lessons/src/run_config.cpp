@@ -193,7 +193,12 @@ ResolvedRun resolve(const RunConfig& config) {
     run.robot.wheel_base = config.robot.wheel_base;
     run.robot.counts_per_turn = config.robot.counts_per_turn;
     run.robot.ir_mount = config.robot.ir_mount;
-    run.robot.ir_curve = config.ir_curve;
+    // Ideal sensors follow the filter's own curve (the paper's simulation). Realistic ones are
+    // GP2D120 units around the sensor's typical curve (the [ir_curve] defaults) whatever the
+    // filter believes, so a calibrated [ir_curve] or profile changes the filter only.
+    run.robot.ir_curve = config.physical.ir_model == sim::IrSensorModel::Realistic
+                             ? SharpIrCurve{}
+                             : config.ir_curve;
     for (const ConfigIssue& issue : sim::validate(run.robot, config.simulator)) {
         // Geometry shared with the filter is reported once, under the filter's name.
         const bool shared = issue.field.rfind("simulator.ir_mount.", 0) == 0

@@ -25,6 +25,10 @@ enum class NoiseStream : std::uint64_t {
     CompassNoise = 11,
     LaserRange = 12,    ///< the laser scanner's Gaussian range noise, one sample per beam
     LaserDropout = 13,  ///< the laser scanner's dropouts, one uniform sample per beam
+    // The realistic IR model's units (sim/ir_sensor_model.hpp): gain and offset of each
+    // sensor, drawn at every reset whichever model is on.
+    IrUnitFront = 14,
+    IrUnitRear = 15,
 };
 
 /// SplitMix64 finaliser: a well-mixed 64-bit value from any 64-bit input.

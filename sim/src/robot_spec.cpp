@@ -35,6 +35,9 @@ std::vector<ConfigIssue> validate(const RobotSpec& robot) {
     check("motor_time_constant", robot.motor_time_constant, 0.0, 5.0);
     check("max_motor_rpm", robot.max_motor_rpm, 1.0, 10000.0);
     check("ir_noise", robot.ir_noise, 0.0, 1.0);
+    check("ir_noise_distance", robot.ir_noise_distance, 0.01, 1.0);
+    check("ir_gain_spread", robot.ir_gain_spread, 0.0, 0.3);
+    check("ir_offset_spread", robot.ir_offset_spread, 0.0, 100.0);
     check("ir_period", robot.ir_period, 0.001, 1.0);
     check("ir_ray_length", robot.ir_ray_length, 0.05, 10.0);
     for (auto&& more : {validate(robot.ir_mount, "simulator.ir_mount"),

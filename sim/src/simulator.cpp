@@ -22,6 +22,17 @@ constexpr int kVelocityIterations = 6;
 constexpr int kPositionIterations = 2;
 constexpr double kTimeTolerance = 1e-9;  // s, when comparing accumulated sample times
 
+// A standard normal sample truncated to ±3σ (redrawn beyond): unit spreads are taken as
+// ±3σ = the data sheet's limits, and units outside them do not ship.
+double truncated_normal(GaussianStream& stream) {
+    constexpr double kLimit = 3.0;
+    double sample = stream.next();
+    while (std::abs(sample) > kLimit) {
+        sample = stream.next();
+    }
+    return sample;
+}
+
 BeaconMap sorted_by_id(BeaconMap beacons) {
     std::stable_sort(beacons.begin(), beacons.end(),
                      [](const Beacon& a, const Beacon& b) { return a.id < b.id; });
@@ -87,6 +98,9 @@ struct Simulator::State {
     double next_ir_time = 0.0;
     std::array<std::uint16_t, 2> ir_adc{};
     std::array<double, 2> ir_distances{};
+    // The realistic model's units as standard normal draws (n₁, n₂) per sensor, drawn at
+    // each reset; the spreads scale them when used, so a changed spread applies at once.
+    std::array<std::array<double, 2>, 2> ir_unit_draws{};
     double next_motion_sample_time = 0.0;  // gyroscope, accelerometers, compass
     double next_scan_time = 0.0;
     double next_laser_time = 0.0;
@@ -176,12 +190,32 @@ struct Simulator::State {
         ir_rear_noise = GaussianStream(seed, NoiseStream::IrRear);
         slip_right = GaussianStream(seed, NoiseStream::SlipRight);
         slip_left = GaussianStream(seed, NoiseStream::SlipLeft);
+        draw_ir_units(seed);
     }
 
-    // The IR sensors sample every ir_period and hold the value: closest hit, noise in
-    // metres, the characteristic curve (with its fold-back), 10-bit conversion.
+    // n₁ (the gain's) then n₂ (the offset's) from each sensor's own stream.
+    void draw_ir_units(std::uint64_t seed) {
+        const NoiseStream streams[] = {NoiseStream::IrUnitFront, NoiseStream::IrUnitRear};
+        for (std::size_t s = 0; s < ir_unit_draws.size(); ++s) {
+            GaussianStream stream(seed, streams[s]);
+            ir_unit_draws[s][0] = truncated_normal(stream);
+            ir_unit_draws[s][1] = truncated_normal(stream);
+        }
+    }
+
+    // Sensor s's gain g = 1 + σ_g·n₁ and offset o = σ_o·n₂.
+    IrUnit ir_unit(std::size_t s) const {
+        return {1.0 + robot.ir_gain_spread * ir_unit_draws[s][0],
+                robot.ir_offset_spread * ir_unit_draws[s][1]};
+    }
+
+    // The IR sensors sample every ir_period and hold the value: closest hit, then
+    // (ideal) noise in metres and the characteristic curve (with its fold-back), or
+    // (realistic) the sensor's own output and noise in counts; 10-bit conversion.
     void sample_ir() {
         GaussianStream* noise[] = {&ir_front_noise, &ir_rear_noise};
+        const double output_noise =
+            ir_output_noise_counts(robot.ir_curve, robot.ir_noise, robot.ir_noise_distance);
         const b2Vec2 look = chassis->GetWorldVector(b2Vec2(0.0f, -1.0f));  // the right side
         for (int sensor = 0; sensor < kIrSensorCount; ++sensor) {
             const auto s = static_cast<std::size_t>(sensor);
@@ -189,6 +223,12 @@ struct Simulator::State {
                 to_b2(robot.ir_mount.longitudinal(sensor), -robot.ir_mount.lateral_offset);
             const b2Vec2 origin = chassis->GetWorldPoint(mount);
             ir_distances[s] = cast_ir_ray(physics, chassis, origin, look, robot.ir_ray_length);
+            if (robot.ir_model == IrSensorModel::Realistic) {
+                const double n = robot.ir_noise > 0.0 ? noise[s]->next() : 0.0;
+                ir_adc[s] =
+                    realistic_ir_adc(robot.ir_curve, ir_unit(s), ir_distances[s], output_noise * n);
+                continue;
+            }
             const double measured =
                 ir_distances[s] + (robot.ir_noise > 0.0 ? robot.ir_noise * noise[s]->next() : 0.0);
             ir_adc[s] =
@@ -357,6 +397,10 @@ GroundTruth Simulator::ground_truth() const {
         degrees_to_radians(magnetic_disturbance_deg(state_->world.magnetic, position));
     truth.teleports = state_->teleports;
     return truth;
+}
+
+std::array<IrUnit, 2> Simulator::ir_units() const {
+    return {state_->ir_unit(0), state_->ir_unit(1)};
 }
 
 double Simulator::time() const {

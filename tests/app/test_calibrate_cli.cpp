@@ -167,3 +167,53 @@ TEST_F(CalibrateCli, CalibrateOdometryRefusesBadErrorListsAndABadProfile) {
 }
 
 }  // namespace
+
+namespace {
+
+// The data rows (not comments, not the header) of a points file.
+int data_rows(const std::string& csv) {
+    int rows = 0;
+    std::size_t start = 0;
+    while (start < csv.size()) {
+        const std::size_t end = csv.find('\n', start);
+        const std::string line = csv.substr(start, end - start);
+        rows += !line.empty() && line[0] != '#' && line != "adc,distance_m" ? 1 : 0;
+        start = end == std::string::npos ? csv.size() : end + 1;
+    }
+    return rows;
+}
+
+}  // namespace
+
+TEST_F(CalibrateCli, MeasureIrWritesPointsThatCalibrateIrFits) {
+    const std::string model = write("realistic.toml", "[simulator]\nir_model = \"realistic\"\n");
+    const fs::path points = dir_ / "ir.csv";
+    const Result measured = run("measure-ir -e f -c " + model + " -s 2005 -o " + points.string());
+    ASSERT_EQ(measured.exit_code, 0) << measured.err;
+    EXPECT_NE(measured.out.find("34 points written to " + points.string()), std::string::npos)
+        << measured.out;
+    const std::string csv = read_file(points);
+    EXPECT_NE(csv.find("seed 2005 (IR model realistic)"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nadc,distance_m\n# front sensor\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("# rear sensor\n"), std::string::npos) << csv;
+    EXPECT_EQ(data_rows(csv), 34);
+    EXPECT_NE(csv.find(",0.04\n"), std::string::npos);
+    EXPECT_NE(csv.find(",0.30\n"), std::string::npos);
+
+    const fs::path profile = dir_ / "robot.toml";
+    const Result fitted =
+        run("calibrate-ir --points " + points.string() + " --profile " + profile.string());
+    ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
+    EXPECT_NE(fitted.out.find("IR curve fitted to 34 measurements"), std::string::npos);
+    // This robot's sensors are not the nominal curve (C_M = 2914, C_R = 5).
+    EXPECT_GT(std::abs(toml_value(read_file(profile), "c_r") - 5.0), 1.0);
+}
+
+TEST_F(CalibrateCli, MeasureIrRefusesABadConfigurationAndReadings) {
+    const std::string bad = write("bad.toml", "[simulator]\nir_model = \"perfect\"\n");
+    const Result refused = run("measure-ir -c " + bad + " -o " + (dir_ / "ir.csv").string());
+    EXPECT_EQ(refused.exit_code, 1);
+    EXPECT_NE(refused.err.find("ir_model"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(dir_ / "ir.csv"));
+    EXPECT_NE(run("measure-ir --readings 0 -o " + (dir_ / "ir.csv").string()).exit_code, 0);
+}

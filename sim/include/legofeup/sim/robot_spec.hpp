@@ -9,6 +9,7 @@
 #include "legofeup/core/ir_geometry.hpp"
 #include "legofeup/core/loop_config.hpp"
 #include "legofeup/core/sharp_ir.hpp"
+#include "legofeup/sim/ir_sensor_model.hpp"
 #include "legofeup/sim/sensor_specs.hpp"
 
 namespace legofeup::sim {
@@ -39,7 +40,22 @@ struct RobotSpec {
     // IR sensors (Sharp GP2D120 on the right side).
     IrMount ir_mount;
     SharpIrCurve ir_curve;
-    double ir_noise = 0.0;       ///< σ of Gaussian noise on each IR distance, m
+    /// Ideal: both sensors follow ir_curve exactly and ir_noise is added to the distance.
+    /// Realistic: each sensor is its own unit (gain and offset drawn from the seed, below) and
+    /// the noise is on its output, of the size that gives ir_noise at ir_noise_distance.
+    IrSensorModel ir_model = IrSensorModel::Ideal;
+    double ir_noise =
+        0.0;  ///< σ of the noise on each IR distance, m (realistic: at ir_noise_distance)
+    /// Realistic model: where the output noise amounts to ir_noise of distance, m. The
+    /// arena's walls are about 15 cm from the sensors.
+    double ir_noise_distance = 0.15;
+    /// Realistic model: σ of each unit's gain g (A_true = g·A + o). The GP2D120 data sheet
+    /// allows 1.95–2.55 V (typ. 2.25) of output change from 30 to 4 cm, ±13 %; taken as ±3σ.
+    double ir_gain_spread = 0.044;
+    /// Realistic model: σ of each unit's offset o, A/D counts. The data sheet allows 0.25–0.55 V
+    /// (typ. 0.4) at 30 cm, ±0.15 V = ±3σ of 0.05 V, of which the gain explains 0.4 V·0.044;
+    /// the rest, √(0.05² − 0.0176²) = 0.047 V, is 9.6 counts of the 10-bit 0–5 V converter.
+    double ir_offset_spread = 9.6;
     double ir_period = 0.038;    ///< a new reading every 38 ms, held in between, s
     double ir_ray_length = 0.8;  ///< beyond this the sensor sees nothing, m
 

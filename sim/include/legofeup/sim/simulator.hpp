@@ -7,6 +7,7 @@
 // rotation and the IR sensors' held 10-bit A/D values. ground_truth() is the separate channel.
 // Deterministic: the same world, robot, settings and seed give bit-identical frames.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 
@@ -79,6 +80,9 @@ class Simulator {
 
     SensorFrame sensor_frame() const;
     GroundTruth ground_truth() const;
+    /// The IR sensors' units (front, rear) the realistic model uses this run: truth, for
+    /// tests and teaching; the ideal model ignores them.
+    std::array<IrUnit, 2> ir_units() const;
     double time() const;
     const WorldSpec& world() const;
     const RobotSpec& robot() const;
