@@ -446,7 +446,8 @@ void add_laser_settings(std::vector<Setting>& s) {
 
     s.push_back(whole(
         "laser.min_matched_points", "lesson.laser.min_matched_points",
-        "mismatch gate: a match with fewer inlier points is not used (prediction only)",
+        "mismatch gate: a match with fewer inlier points is not used (prediction only; the "
+        "paper names this condition, §III-B, but gives no number)",
         [](auto& c) -> auto& { return c.lesson.laser.min_matched_points; }));
     s.push_back(boolean(
         "laser.kidnap_recovery", "lesson.laser.kidnap_recovery",

@@ -112,7 +112,9 @@ struct ExtraSensorCalibration {
 
 /// Laser scan matching against a map (paper 001): ray-cast the expected scan at the predicted
 /// pose, ICP it against the measured scan, and use the match as a pose observation with
-/// H = I (eq. 14–18). Defaults are the paper's appendix.
+/// H = I (eq. 14–18). Q, R (appendix A) and the recovery's 100 mismatches and P × 10
+/// (§IV-B) are the paper's; ICP's settings are not (docs/scan_matching.md says why), and the
+/// paper gives no number for min_matched_points or for how much stricter ICP gets.
 struct LaserTuning {
     /// eq. 13: Q = diag(q_stat + q_dyn·|Δ_odom|) for x, y, θ, added each prediction
     /// (m², m², rad²; the dynamic parts per metre / radian of odometry increment).
@@ -128,7 +130,8 @@ struct LaserTuning {
     double r_theta = 0.01;
     IcpParams icp;
     /// Mismatch gating (§III-B): an ICP result that did not converge or matched fewer
-    /// points than this is not used (prediction only).
+    /// points than this is not used (prediction only). §III-B names the condition but not
+    /// its number; 100 here is ours (the paper's 100 is the mismatch count of §IV-B).
     int min_matched_points = 100;
     /// Kidnapping recovery (§IV-B): after this many consecutive mismatches, P is multiplied
     /// by `recovery_covariance_factor` and the ICP correspondence distance by
