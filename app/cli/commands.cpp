@@ -203,8 +203,8 @@ void print_summary(const lessons::ResolvedRun& run, const lessons::RunResult& re
     if (m.truth) {
         const TruthMetrics& t = *m.truth;
         std::printf(
-            "  mean NEES %.2f, inside a consistent filter's 95%% bounds of a time average "
-            "[%.3f, %.3f] (%.0f effective samples); %.0f%% of steps inside one step's bounds "
+            "  mean NEES %.2f (a consistent filter's lies in [%.3f, %.3f] at 95%%: a time "
+            "average of %.0f effective samples); %.0f%% of steps inside one step's bounds "
             "[%.3f, %.3f]\n",
             t.mean_nees, t.time_average_nees_bounds.lower, t.time_average_nees_bounds.upper,
             t.nees_effective_samples, 100.0 * t.nees_inside_fraction, m.nees_bounds.lower,
