@@ -310,7 +310,7 @@ TEST(ShardFiles, RejectsWhatIsNotAShardWithTheFileAndTheReason) {
     EXPECT_NE(reason(R"({"format": "legofeup-shard", "format_version": 99})")
                   .find("x.json: format_version = 99"),
               std::string::npos);
-    EXPECT_NE(reason(R"({"format": "legofeup-shard", "format_version": 1})")
+    EXPECT_NE(reason(R"({"format": "legofeup-shard", "format_version": 2})")
                   .find("x.json: damaged shard file"),
               std::string::npos);
 }
