@@ -201,9 +201,14 @@ void print_summary(const lessons::ResolvedRun& run, const lessons::RunResult& re
                 static_cast<unsigned long long>(m.observations));
     std::printf("  mean NIS %.2f over the applied updates\n", m.mean_nis);
     if (m.truth) {
-        std::printf("  mean NEES %.2f; %.0f%% of steps inside the 95%% bounds [%.3f, %.3f]\n",
-                    m.truth->mean_nees, 100.0 * m.truth->nees_inside_fraction, m.nees_bounds.lower,
-                    m.nees_bounds.upper);
+        const TruthMetrics& t = *m.truth;
+        std::printf(
+            "  mean NEES %.2f (a consistent filter's lies in [%.3f, %.3f] at 95%%: a time "
+            "average of %.0f effective samples); %.0f%% of steps inside one step's bounds "
+            "[%.3f, %.3f]\n",
+            t.mean_nees, t.time_average_nees_bounds.lower, t.time_average_nees_bounds.upper,
+            t.nees_effective_samples, 100.0 * t.nees_inside_fraction, m.nees_bounds.lower,
+            m.nees_bounds.upper);
     } else {
         std::printf("  NEES: — (no ground truth on this link; see trace.csv for the estimates)\n");
     }

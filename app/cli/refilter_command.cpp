@@ -152,11 +152,17 @@ void print_comparison(const RunLog& log, const RefilterResult& result,
     row("updates rejected by the filter", static_cast<double>(a.updates_rejected),
         static_cast<double>(b.updates_rejected));
     truth_row("mean NEES", [](const TruthMetrics& t) { return t.mean_nees; });
+    truth_row("mean NEES 95% bounds, lower",
+              [](const TruthMetrics& t) { return t.time_average_nees_bounds.lower; });
+    truth_row("mean NEES 95% bounds, upper",
+              [](const TruthMetrics& t) { return t.time_average_nees_bounds.upper; });
     truth_row("NEES inside 95% bounds (%)",
               [](const TruthMetrics& t) { return 100.0 * t.nees_inside_fraction; });
     row("mean NIS", a.mean_nis, b.mean_nis);
-    std::printf("  (NEES 95%% bounds of one step: [%.3f, %.3f])\n", a.nees_bounds.lower,
-                a.nees_bounds.upper);
+    std::printf(
+        "  (mean NEES bounds: of a time average of that many effective samples; NEES inside: "
+        "of one step, [%.3f, %.3f])\n",
+        a.nees_bounds.lower, a.nees_bounds.upper);
     if (!a.truth) {
         std::printf(
             "  — : no ground truth in the log (a real robot), so no errors or NEES; see the "

@@ -125,10 +125,20 @@ ChiSquareInterval average_chi_square_interval(int dof, int count, double confide
         throw std::invalid_argument(
             "average_chi_square_interval: dof and count must be positive, confidence in (0, 1)");
     }
-    const double total_dof = static_cast<double>(dof) * count;
+    return time_average_chi_square_interval(dof, static_cast<double>(count), confidence);
+}
+
+ChiSquareInterval time_average_chi_square_interval(int dof, double effective_samples,
+                                                   double confidence) {
+    if (dof <= 0 || !(effective_samples > 0.0) || !(confidence > 0.0 && confidence < 1.0)) {
+        throw std::invalid_argument(
+            "time_average_chi_square_interval: dof and effective samples must be positive, "
+            "confidence in (0, 1)");
+    }
+    const double total_dof = static_cast<double>(dof) * effective_samples;
     const double tail = 0.5 * (1.0 - confidence);
-    return {chi_square_quantile(tail, total_dof) / count,
-            chi_square_quantile(1.0 - tail, total_dof) / count};
+    return {chi_square_quantile(tail, total_dof) / effective_samples,
+            chi_square_quantile(1.0 - tail, total_dof) / effective_samples};
 }
 
 }  // namespace legofeup

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "legofeup/core/consistency.hpp"
+#include "legofeup/core/effective_samples.hpp"
 #include "legofeup/core/pose_error.hpp"
 
 namespace legofeup {
@@ -109,6 +110,7 @@ void RunMetricsAccumulator::add_truth(const LoopSnapshot& snapshot, const Pose2&
     if (std::isfinite(nees)) {
         sum_nees_ += nees;
         ++nees_count_;
+        nees_series_.push_back(nees);
         nees_inside_ += metrics_.nees_bounds.contains(nees) ? 1U : 0U;
     }
 
@@ -212,6 +214,11 @@ void RunMetricsAccumulator::finish_truth(TruthMetrics& t) const {
         t.mean_nees = sum_nees_ / static_cast<double>(nees_count_);
         t.nees_inside_fraction =
             static_cast<double>(nees_inside_) / static_cast<double>(nees_count_);
+        const EffectiveSamples effective = effective_sample_size(nees_series_);
+        t.nees_effective_samples = effective.count;
+        t.nees_autocorrelation_time = effective.autocorrelation_time;
+        t.time_average_nees_bounds =
+            time_average_chi_square_interval(kStateSize, effective.count, 0.95);
     }
     if (t.final_position_error > 0.0) {
         t.odometry_to_estimate_final_error_ratio =

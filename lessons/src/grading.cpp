@@ -5,7 +5,11 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <vector>
 
+#include "legofeup/core/chi_square.hpp"
+#include "legofeup/core/effective_samples.hpp"
+#include "legofeup/core/state.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 
@@ -57,6 +61,43 @@ std::optional<double> as_number(const nlohmann::json& value) {
     return std::nullopt;
 }
 
+/// The bounds metrics of a time average, pooled over the seeds (below), and their confidence.
+struct TimeAverageBounds {
+    const char* name;
+    double confidence;
+};
+constexpr TimeAverageBounds kTimeAverageNeesBounds[] = {
+    {"time_average_nees_95_bounds", 0.95},
+    {"time_average_nees_99_9_bounds", 0.999},
+};
+constexpr const char* kNeesEffectiveSamples = "nees_effective_samples";
+
+/// The 95 % interval of the mean over the seeds of the per-seed mean NEES, for a consistent
+/// filter. Seed i's time average is worth N_i independent χ²(3) values (its
+/// nees_effective_samples); the seeds are independent, and the mean weighs them equally, so
+/// it is worth N = S² / Σ 1/N_i (pooled_effective_samples) and its interval is
+/// χ²(3N)/N — far narrower than one seed's. Null when a seed has no effective samples (no
+/// truth).
+nlohmann::json pooled_time_average_bounds(const nlohmann::json& per_seed, double confidence) {
+    std::vector<double> effective;
+    for (const nlohmann::json& seed : per_seed) {
+        const nlohmann::json& metrics = seed["metrics"];
+        if (!metrics.contains(kNeesEffectiveSamples)
+            || !metrics[kNeesEffectiveSamples].is_number()) {
+            return nullptr;
+        }
+        effective.push_back(metrics[kNeesEffectiveSamples].get<double>());
+    }
+    const std::vector<double> equal_weights(effective.size(), 1.0);
+    const double pooled = pooled_effective_samples(equal_weights, effective);
+    if (!(pooled > 0.0)) {
+        return nullptr;
+    }
+    const ChiSquareInterval bounds =
+        time_average_chi_square_interval(kStateSize, pooled, confidence);
+    return {bounds.lower, bounds.upper};
+}
+
 }  // namespace
 
 std::vector<std::uint64_t> grading_seeds(const GradingSpec& spec, const GradingRequest& request) {
@@ -106,8 +147,9 @@ nlohmann::json grade_submission(const Lesson& lesson, const Submission& submissi
         per_seed.push_back({{"seed", seeds[i]}, {"metrics", std::move(metrics)}});
     }
 
-    // The checks see the mean of every metric; a bounds metric (an array) is the same for
-    // every seed — it depends on the configuration only — so the first seed's stands.
+    // The checks see the mean of every metric. A bounds metric (an array) of one step is the
+    // same for every seed — it depends on the configuration only — so the first seed's
+    // stands; the bounds of a time average are pooled over the seeds, as the mean is.
     nlohmann::json means = nlohmann::json::object();
     nlohmann::json aggregate = nlohmann::json::object();
     for (const auto& [name, spread] : spreads) {
@@ -129,6 +171,10 @@ nlohmann::json grade_submission(const Lesson& lesson, const Submission& submissi
             if (value.is_array()) {
                 means[name] = value;
             }
+        }
+        for (const TimeAverageBounds& bounds : kTimeAverageNeesBounds) {
+            means[bounds.name] = pooled_time_average_bounds(per_seed, bounds.confidence);
+            aggregate[bounds.name] = means[bounds.name];
         }
     }
     nlohmann::json checks = nlohmann::json::array();

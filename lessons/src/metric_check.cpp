@@ -95,12 +95,37 @@ std::string bounds_problem(const std::string& name) {
             return {};
         case MetricKind::Unknown:
             return is_word(name) ? unknown_metric(name)
-                                 : "expected a bounds metric after `within`, e.g. nees_95_bounds";
+                                 : "expected a bounds metric after `within`, e.g. "
+                                   "time_average_nees_95_bounds";
         case MetricKind::Number:
         case MetricKind::Boolean:
             break;
     }
     return "'" + name + "' is not a pair of bounds (those are: " + bounds_metrics() + ")";
+}
+
+/// A bounds metric made for another statistic than the one it would judge.
+struct WrongPairing {
+    const char* metric;
+    const char* bounds;
+    const char* why;
+};
+
+// The bounds of one step's NEES are far wider than those of the NEES averaged over a run's
+// steps (or over seeds): a pessimistic (mean NEES 0.3) or an overconfident filter passes them.
+constexpr WrongPairing kWrongPairings[] = {
+    {"mean_nees", "nees_95_bounds",
+     "nees_95_bounds are the bounds of one step's NEES, far wider than those of mean_nees, a "
+     "time average: write `mean_nees within time_average_nees_95_bounds` (docs/lessons.md)"},
+};
+
+std::string pairing_problem(const std::string& metric, const std::string& bounds) {
+    for (const WrongPairing& pairing : kWrongPairings) {
+        if (metric == pairing.metric && bounds == pairing.bounds) {
+            return pairing.why;
+        }
+    }
+    return {};
 }
 
 struct Operator {
@@ -177,6 +202,9 @@ ParsedCheck parse_words(const std::string& text) {
     if (parsed.problem.empty()) {
         parsed.problem = bounds_problem(words[2]);
     }
+    if (parsed.problem.empty()) {
+        parsed.problem = pairing_problem(words[0], words[2]);
+    }
     return parsed;
 }
 
@@ -238,8 +266,8 @@ CheckResult evaluate(const MetricCheck& check, const nlohmann::json& metrics) {
     if (check.op == MetricCheck::Op::Within) {
         const auto bounds = bounds_of(metrics, check.bounds_metric);
         if (!bounds) {
-            result.message =
-                left + ", but " + check.bounds_metric + " is not among the run's metrics: failed";
+            result.message = left + ", but " + check.bounds_metric
+                             + absent_because(metrics, check.bounds_metric) + ": failed";
             return result;
         }
         result.passed = *value >= bounds->first && *value <= bounds->second;

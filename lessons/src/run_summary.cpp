@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <iterator>
 
+#include "legofeup/core/chi_square.hpp"
+#include "legofeup/core/state.hpp"
 #include "legofeup/lessons/config_schema.hpp"
 
 namespace legofeup::lessons {
@@ -52,6 +54,23 @@ nlohmann::json field(const TruthMetrics& t) {
     return t.*Member;
 }
 
+/// A TruthMetrics interval as [lower, upper]: a bounds metric for `within`.
+template <auto Member>
+nlohmann::json bounds(const TruthMetrics& t) {
+    return {(t.*Member).lower, (t.*Member).upper};
+}
+
+/// The interval of mean_nees at another confidence than TruthMetrics' 95 % (the same N_eff).
+template <int PerThousand>
+nlohmann::json time_average_nees_bounds(const TruthMetrics& t) {
+    if (!(t.nees_effective_samples > 0.0)) {
+        return {0.0, 0.0};
+    }
+    const ChiSquareInterval bounds = time_average_chi_square_interval(
+        kStateSize, t.nees_effective_samples, PerThousand / 1000.0);
+    return {bounds.lower, bounds.upper};
+}
+
 /// The ratio of two TruthMetrics members (below 1: the first is better).
 template <auto Numerator, auto Denominator>
 nlohmann::json ratio_of(const TruthMetrics& t) {
@@ -70,6 +89,10 @@ constexpr TruthMetric kTruthMetrics[] = {
     {"final_odometry_position_error_m", field<&TruthMetrics::final_odometry_position_error>},
     {"mean_nees", field<&TruthMetrics::mean_nees>},
     {"nees_inside_fraction", field<&TruthMetrics::nees_inside_fraction>},
+    {"nees_effective_samples", field<&TruthMetrics::nees_effective_samples>},
+    {"nees_autocorrelation_time", field<&TruthMetrics::nees_autocorrelation_time>},
+    {"time_average_nees_95_bounds", bounds<&TruthMetrics::time_average_nees_bounds>},
+    {"time_average_nees_99_9_bounds", time_average_nees_bounds<999>},
     {"rms_odometry_heading_error_rad", field<&TruthMetrics::rms_odometry_heading_error>},
     {"max_odometry_heading_error_rad", field<&TruthMetrics::max_odometry_heading_error>},
     {"final_odometry_heading_error_rad", field<&TruthMetrics::final_odometry_heading_error>},

@@ -52,6 +52,59 @@ TEST(ChiSquare, ReproducesThePublishedConsistencyBounds) {
     }
 }
 
+TEST(ChiSquare, LargeDegreesOfFreedomMatchTheTables) {
+    // NIST/SEMATECH e-Handbook, table 1.3.6.7.4 (100), and the standard tables (1000).
+    EXPECT_NEAR(chi_square_quantile(0.025, 100.0), 74.222, 1e-3);
+    EXPECT_NEAR(chi_square_quantile(0.975, 100.0), 129.561, 1e-3);
+    EXPECT_NEAR(chi_square_quantile(0.025, 1000.0), 914.257, 1e-3);
+    EXPECT_NEAR(chi_square_quantile(0.975, 1000.0), 1089.531, 1e-3);
+}
+
+// P(X ≤ x) by Simpson's rule on the density, an independent calculation of the CDF for any
+// real dof ≥ 6 (the density is smooth enough at 0 for the rule's h⁴ error): x^{k/2−1} e^{−x/2} /
+// (2^{k/2} Γ(k/2)).
+double cdf_by_simpson(double x, double dof) {
+    constexpr int intervals = 20000;
+    const auto density = [dof](double t) {
+        if (t <= 0.0) {
+            return 0.0;
+        }
+        return std::exp((0.5 * dof - 1.0) * std::log(t) - 0.5 * t - 0.5 * dof * std::log(2.0)
+                        - std::lgamma(0.5 * dof));
+    };
+    const double h = x / intervals;
+    double sum = density(0.0) + density(x);
+    for (int i = 1; i < intervals; ++i) {
+        sum += (i % 2 == 1 ? 4.0 : 2.0) * density(i * h);
+    }
+    return sum * h / 3.0;
+}
+
+TEST(ChiSquare, NonIntegerDegreesOfFreedomMatchAnIntegratedDensity) {
+    // N_eff·n is rarely an integer: the quantiles there must be right too.
+    for (const double dof : {6.5, 7.3, 31.7, 150.6, 2121.9}) {
+        for (const double p : {0.025, 0.5, 0.975}) {
+            const double x = chi_square_quantile(p, dof);
+            EXPECT_NEAR(cdf_by_simpson(x, dof), p, 1e-8) << "dof " << dof << " p " << p;
+        }
+    }
+}
+
+TEST(ChiSquare, TimeAverageIntervalOfAWholeCountIsTheAverageInterval) {
+    const ChiSquareInterval whole = average_chi_square_interval(3, 40, 0.95);
+    const ChiSquareInterval time = time_average_chi_square_interval(3, 40.0, 0.95);
+    EXPECT_DOUBLE_EQ(time.lower, whole.lower);
+    EXPECT_DOUBLE_EQ(time.upper, whole.upper);
+    // Between two whole counts, between their intervals (the interval narrows as N grows).
+    const ChiSquareInterval between = time_average_chi_square_interval(3, 40.5, 0.95);
+    const ChiSquareInterval next = average_chi_square_interval(3, 41, 0.95);
+    EXPECT_GT(between.lower, whole.lower);
+    EXPECT_LT(between.lower, next.lower);
+    EXPECT_LT(between.upper, whole.upper);
+    EXPECT_GT(between.upper, next.upper);
+    EXPECT_THROW(time_average_chi_square_interval(3, 0.0), std::invalid_argument);
+}
+
 TEST(ChiSquare, IntervalContainsItsBounds) {
     const ChiSquareInterval interval{1.0, 2.0};
     EXPECT_TRUE(interval.contains(1.0));

@@ -3,7 +3,12 @@
 // grading passes the reference tuning of step f on unseen seeds and fails the bad ones.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+
 #include "legofeup/lessons/experiments.hpp"
+#include "legofeup/lessons/grading.hpp"
 #include "legofeup/lessons/lesson.hpp"
 #include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/run_summary.hpp"
@@ -23,31 +28,37 @@ bool all_pass(const std::vector<CheckResult>& results) {
     return failures(results).empty();
 }
 
-// Numbers and booleans averaged over runs; bounds (pairs) from the first run — as grading
-// judges a submission.
-nlohmann::json mean_metrics(const std::vector<nlohmann::json>& runs) {
-    nlohmann::json mean = runs.front();
-    for (auto& [name, value] : mean.items()) {
-        if (!value.is_number() && !value.is_boolean()) {
-            continue;
-        }
-        double sum = 0.0;
-        for (const nlohmann::json& run : runs) {
-            sum += run[name].is_boolean() ? (run[name].get<bool>() ? 1.0 : 0.0)
-                                          : run[name].get<double>();
-        }
-        value = sum / static_cast<double>(runs.size());
-    }
-    return mean;
+Submission submission_of(const std::string& tuning) {
+    return parse_submission("lesson = \"legofeup\"\nstudents = \"Test\"\n" + tuning, "test.toml",
+                            legofeup_lesson());
 }
 
-nlohmann::json graded_mean(const RunConfig& config, int seeds) {
-    const GradingSpec& grading = *legofeup_lesson().grading;
-    std::vector<nlohmann::json> runs;
-    for (int i = 0; i < seeds; ++i) {
-        runs.push_back(metrics_of(config, grading.first_seed + static_cast<std::uint64_t>(i)));
+// The lesson's grading of `submission` on `seeds` seeds from `first_seed` (the lesson's own
+// first seed when unset): the grading code itself, pooled bounds and all.
+nlohmann::json grade_of(const Submission& submission, int seeds,
+                        std::optional<std::uint64_t> first_seed = std::nullopt) {
+    GradingRequest request;
+    request.seeds = seeds;
+    request.first_seed = first_seed;
+    return grade_submission(legofeup_lesson(), submission, request);
+}
+
+const nlohmann::json& check_named(const nlohmann::json& grade, const std::string& expression) {
+    for (const nlohmann::json& check : grade["checks"]) {
+        if (check["expression"] == expression) {
+            return check;
+        }
     }
-    return mean_metrics(runs);
+    throw std::runtime_error("no grading check " + expression);
+}
+
+// Step f's reference tuning with Q and R scaled together by k.
+std::string scaled_reference(double k) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "[tuning.filter]\nq11 = %.6g\nq22 = %.6g\nr11 = %.6g\nr22 = %.6g\n", 1e-6 * k,
+                  1e-5 * k, 1.3e-4 * k, 1.3e-4 * k);
+    return text;
 }
 
 TEST(LegoFeupLesson, HasSixStepsWithTextsQuestionsChecksAndGrading) {
@@ -133,20 +144,35 @@ INSTANTIATE_TEST_SUITE_P(
                       ChecksOnRun{"f", "d"}, ChecksOnRun{"f", "e"}));
 
 TEST(LegoFeupLesson, GradingPassesTheReferenceTuningOnUnseenSeeds) {
-    const auto results =
-        evaluate_checks(legofeup_lesson().grading->checks, graded_mean(step("f").config, 3));
-    EXPECT_TRUE(all_pass(results)) << failures(results);
+    const nlohmann::json grade = grade_of(submission_of(scaled_reference(1.0)), 3);
+    EXPECT_TRUE(grade["passed"].get<bool>()) << grade["summary"].get<std::string>();
 }
 
 class BadTuning : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(BadTuning, FailsTheGrading) {
-    const Submission submission = parse_submission(
-        std::string("lesson = \"legofeup\"\nstudents = \"Test\"\n[tuning.filter]\n") + GetParam(),
-        "bad.toml", legofeup_lesson());
-    const auto results =
-        evaluate_checks(legofeup_lesson().grading->checks, graded_mean(submission.tuned, 1));
-    EXPECT_FALSE(all_pass(results));
+    const nlohmann::json grade =
+        grade_of(submission_of(std::string("[tuning.filter]\n") + GetParam()), 1);
+    EXPECT_FALSE(grade["passed"].get<bool>()) << grade["summary"].get<std::string>();
+}
+
+// Q and R scaled together by k leave the gain as it is and, after the start, scale P by k,
+// so the NEES by 1/k:
+// × 10 is pessimistic (mean NEES ≈ 0.35), ÷ 3 overconfident (≈ 10). The consistency check
+// itself must say so — not only the share of steps inside one step's bounds — and pass the
+// reference. Seeds 8001–8020: used by no other test, nor to choose the reference.
+TEST(LegoFeupLesson, ConsistencyCheckTellsTheReferenceFromPessimisticAndOverconfidentQAndR) {
+    constexpr const char* consistency = "mean_nees within time_average_nees_99_9_bounds";
+    constexpr std::uint64_t first_seed = 8001;
+    const nlohmann::json reference = grade_of(submission_of(scaled_reference(1.0)), 20, first_seed);
+    EXPECT_TRUE(check_named(reference, consistency)["passed"].get<bool>())
+        << reference["summary"].get<std::string>();
+    EXPECT_TRUE(reference["passed"].get<bool>()) << reference["summary"].get<std::string>();
+    for (const double k : {10.0, 1.0 / 3.0}) {
+        const nlohmann::json grade = grade_of(submission_of(scaled_reference(k)), 20, first_seed);
+        EXPECT_FALSE(check_named(grade, consistency)["passed"].get<bool>())
+            << "Q and R × " << k << ": " << grade["summary"].get<std::string>();
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(LegoFeup, BadTuning,

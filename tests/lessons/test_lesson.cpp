@@ -37,7 +37,7 @@ text = "How much?"
 expression = "final_position_error_m > 0.2"
 description = "Lost."
 [[step.check]]
-expression = "mean_nees within nees_95_bounds"
+expression = "mean_nees within time_average_nees_95_bounds"
 description = "Consistent."
 [step.config.filter]
 wall_updates = false
@@ -121,7 +121,7 @@ TEST(Lesson, ReadsStepsQuestionsChecksPresetsAndGrading) {
     EXPECT_EQ(one.checks[0].source, "demo.toml:21");
     EXPECT_EQ(one.checks[1].op, MetricCheck::Op::Within);
     EXPECT_EQ(one.checks[1].metric, "mean_nees");
-    EXPECT_EQ(one.checks[1].bounds_metric, "nees_95_bounds");
+    EXPECT_EQ(one.checks[1].bounds_metric, "time_average_nees_95_bounds");
 
     // The defaults, then [base], then the step's own overlay.
     EXPECT_EQ(one.config.filter.q11, 2e-7);
@@ -213,6 +213,8 @@ TEST(Lesson, MalformedChecksAreProblems) {
         {"mean_nees within", "cannot read this check"},
         {"mean_nees", "is a number, not true/false"},
         {"nees_95_bounds < 3", "is a pair of bounds"},
+        // One step's bounds cannot judge a time average: a pessimistic filter passes them.
+        {"mean_nees within nees_95_bounds", "write `mean_nees within time_average_nees_95_bounds`"},
         {"< 3", "expected a metric name"},
         {"association < 3", "no metric 'association'"},
     };
@@ -302,8 +304,10 @@ TEST(Lesson, LoadsFromAFileAndFindsTheBuiltInOne) {
 
 TEST(Checks, KnownMetricsAreSummaryJsonsNumbersBooleansAndBounds) {
     const auto& names = known_metrics();
-    for (const char* name : {"rms_position_error_m", "mean_nees", "nees_95_bounds",
-                             "routine_finished", "updates_applied", "mean_nis"}) {
+    for (const char* name :
+         {"rms_position_error_m", "mean_nees", "nees_95_bounds", "time_average_nees_95_bounds",
+          "time_average_nees_99_9_bounds", "nees_effective_samples", "routine_finished",
+          "updates_applied", "mean_nis"}) {
         EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
     }
     // The association counts are an object: a check cannot compare it.
@@ -347,9 +351,10 @@ TEST(Checks, BooleansCountAsOneOrZero) {
 }
 
 TEST(Checks, WithinUsesTheBoundsMetricInclusively) {
-    const MetricCheck within = check_of("mean_nees within nees_95_bounds");
-    const auto passed = [&](double nees) {
-        return evaluate_checks({within}, {{"mean_nees", nees}, {"nees_95_bounds", {0.2, 9.3}}})
+    const MetricCheck within = check_of("nees_inside_fraction within nees_95_bounds");
+    const auto passed = [&](double value) {
+        return evaluate_checks({within},
+                               {{"nees_inside_fraction", value}, {"nees_95_bounds", {0.2, 9.3}}})
             .at(0)
             .passed;
     };
@@ -358,13 +363,21 @@ TEST(Checks, WithinUsesTheBoundsMetricInclusively) {
     EXPECT_TRUE(passed(9.3));
     EXPECT_FALSE(passed(0.19));
     EXPECT_FALSE(passed(9.31));
-    const CheckResult no_bounds = evaluate_checks({within}, {{"mean_nees", 3.0}}).at(0);
+    const CheckResult no_bounds = evaluate_checks({within}, {{"nees_inside_fraction", 3.0}}).at(0);
     EXPECT_FALSE(no_bounds.passed);
     EXPECT_NE(no_bounds.message.find("nees_95_bounds is not among"), std::string::npos);
-    EXPECT_EQ(evaluate_checks({within}, {{"mean_nees", 3.0}, {"nees_95_bounds", {0.2, 9.3}}})
-                  .at(0)
-                  .message,
-              "mean_nees = 3 within nees_95_bounds [0.2, 9.3]: passed");
+    EXPECT_EQ(
+        evaluate_checks({within}, {{"nees_inside_fraction", 3.0}, {"nees_95_bounds", {0.2, 9.3}}})
+            .at(0)
+            .message,
+        "nees_inside_fraction = 3 within nees_95_bounds [0.2, 9.3]: passed");
+    // Bounds that need the truth, in a run without one: said so.
+    const MetricCheck average = check_of("mean_nees within time_average_nees_95_bounds");
+    const CheckResult blind =
+        evaluate_checks({average}, {{"mean_nees", 3.0}, {"time_average_nees_95_bounds", nullptr}})
+            .at(0);
+    EXPECT_FALSE(blind.passed);
+    EXPECT_NE(blind.message.find("needs the ground truth"), std::string::npos) << blind.message;
 }
 
 TEST(Checks, AMissingOrNonNumericMetricFails) {

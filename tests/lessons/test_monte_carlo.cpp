@@ -167,6 +167,29 @@ TEST(MonteCarlo, BoundsAreCoresChiSquareIntervalsForTheRunsPresent) {
     // N = 3 runs: the averaged NEES of a consistent filter lies in [χ²₀.₀₂₅(9)/3, χ²₀.₉₇₅(9)/3].
     EXPECT_NEAR(summary.steps[0].nees_bounds.lower, 2.700389 / 3.0, 1e-5);
     EXPECT_NEAR(summary.steps[0].nees_bounds.upper, 19.022768 / 3.0, 1e-5);
+
+    // The mean over all runs and steps is a time average: its bounds come from the runs'
+    // effective samples, each run weighted by its steps, N = (Σ Tᵢ)² / Σ Tᵢ²/N_i.
+    double steps = 0.0;
+    double variance = 0.0;
+    for (const RunRecord& run : summary.runs) {
+        ASSERT_GT(run.nees_effective_samples, 1.0);
+        ASSERT_LT(run.nees_effective_samples, static_cast<double>(run.steps));
+        const auto t = static_cast<double>(run.steps);
+        steps += t;
+        variance += t * t / run.nees_effective_samples;
+        const ChiSquareInterval own =
+            time_average_chi_square_interval(3, run.nees_effective_samples);
+        EXPECT_EQ(run.time_average_nees_lower, own.lower);
+        EXPECT_EQ(run.time_average_nees_upper, own.upper);
+    }
+    const ChiSquareInterval pooled = time_average_chi_square_interval(3, steps * steps / variance);
+    EXPECT_NEAR(summary.time_average_nees_bounds.lower, pooled.lower, 1e-12);
+    EXPECT_NEAR(summary.time_average_nees_bounds.upper, pooled.upper, 1e-12);
+    // Far narrower than one step's χ²(3) interval, wider than that of all steps independent.
+    EXPECT_GT(summary.time_average_nees_bounds.lower, 0.216);
+    EXPECT_LT(summary.time_average_nees_bounds.lower,
+              average_chi_square_interval(3, static_cast<int>(steps)).lower);
 }
 
 TEST(MonteCarlo, TheTunedFilterIsConsistentOverManyRuns) {
@@ -287,7 +310,7 @@ TEST(ShardFiles, RejectsWhatIsNotAShardWithTheFileAndTheReason) {
     EXPECT_NE(reason(R"({"format": "legofeup-shard", "format_version": 99})")
                   .find("x.json: format_version = 99"),
               std::string::npos);
-    EXPECT_NE(reason(R"({"format": "legofeup-shard", "format_version": 1})")
+    EXPECT_NE(reason(R"({"format": "legofeup-shard", "format_version": 2})")
                   .find("x.json: damaged shard file"),
               std::string::npos);
 }

@@ -46,12 +46,12 @@ const std::array<Row, 8>& rows() {
          with_truth([](Truth t, Run) { return metres(t.max_position_error); })},
         {QT_TRANSLATE_NOOP("RefilterMetrics", "RMS heading error"),
          with_truth([](Truth t, Run) { return degrees(t.rms_heading_error); })},
-        {QT_TRANSLATE_NOOP("RefilterMetrics", "Mean NEES (χ²(3) 95 %)"),
-         with_truth([](Truth t, Run m) {
+        {QT_TRANSLATE_NOOP("RefilterMetrics", "Mean NEES (95 % bounds of a time average)"),
+         with_truth([](Truth t, Run) {
              return QStringLiteral("%1  [%2, %3]")
                  .arg(t.mean_nees, 0, 'f', 2)
-                 .arg(m.nees_bounds.lower, 0, 'f', 2)
-                 .arg(m.nees_bounds.upper, 0, 'f', 2);
+                 .arg(t.time_average_nees_bounds.lower, 0, 'f', 2)
+                 .arg(t.time_average_nees_bounds.upper, 0, 'f', 2);
          })},
         {QT_TRANSLATE_NOOP("RefilterMetrics", "Steps with NEES inside"),
          with_truth([](Truth t, Run) {

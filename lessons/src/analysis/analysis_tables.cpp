@@ -26,6 +26,9 @@ constexpr std::array kRunFields = {
     Field<RunRecord>{"mean_nees", &RunRecord::mean_nees},
     Field<RunRecord>{"nees_inside_fraction", &RunRecord::nees_inside_fraction},
     Field<RunRecord>{"mean_nis", &RunRecord::mean_nis},
+    Field<RunRecord>{"nees_effective_samples", &RunRecord::nees_effective_samples},
+    Field<RunRecord>{"time_average_nees_lower", &RunRecord::time_average_nees_lower},
+    Field<RunRecord>{"time_average_nees_upper", &RunRecord::time_average_nees_upper},
 };
 
 constexpr std::array kCellFields = {
@@ -194,6 +197,9 @@ nlohmann::json monte_carlo_summary_json(const BatchHeader& header,
         {"final_position_error_m", distribution(summary.final_position_error)},
         {"rms_heading_error_rad", distribution(summary.rms_heading_error)},
         {"mean_nees", number(summary.mean_nees)},
+        {"time_average_nees_95_bounds", interval(summary.time_average_nees_bounds)},
+        {"runs_nees_inside_time_average_fraction",
+         number(summary.runs_nees_inside_time_average_fraction)},
         {"averaged_nees_95_bounds_all_runs",
          first != nullptr ? interval(first->nees_bounds) : nlohmann::json(nullptr)},
         {"nees_inside_fraction", number(summary.nees_inside_fraction)},

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "legofeup/core/consistency.hpp"
+#include "legofeup/core/effective_samples.hpp"
 #include "legofeup/core/pose_error.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
@@ -57,6 +58,28 @@ std::vector<double> column(const std::vector<RunRecord>& runs, double RunRecord:
         values.push_back(run.*field);
     }
     return values;
+}
+
+// The pooled mean NEES weighs every step alike, so run i (Tᵢ steps, all with a truth in the
+// simulator) has weight Tᵢ: N = (Σ Tᵢ)² / Σ Tᵢ²/N_i (pooled_effective_samples).
+void add_time_average_bounds(MonteCarloSummary& summary, const std::vector<RunRecord>& runs) {
+    std::vector<double> weights;
+    std::vector<double> effective;
+    std::size_t inside = 0;
+    for (const RunRecord& run : runs) {
+        weights.push_back(static_cast<double>(run.steps));
+        effective.push_back(run.nees_effective_samples);
+        inside += run.mean_nees >= run.time_average_nees_lower
+                          && run.mean_nees <= run.time_average_nees_upper
+                      ? 1U
+                      : 0U;
+    }
+    const double pooled = pooled_effective_samples(weights, effective);
+    summary.time_average_nees_bounds =
+        pooled > 0.0 ? time_average_chi_square_interval(kStateSize, pooled, 0.95)
+                     : ChiSquareInterval{kNan, kNan};
+    summary.runs_nees_inside_time_average_fraction =
+        runs.empty() ? kNan : static_cast<double>(inside) / static_cast<double>(runs.size());
 }
 
 }  // namespace
@@ -119,7 +142,10 @@ RunRecord make_run_record(std::size_t index, std::uint64_t seed, const RunResult
             t.final_heading_error,
             t.mean_nees,
             t.nees_inside_fraction,
-            m.mean_nis};
+            m.mean_nis,
+            t.nees_effective_samples,
+            t.time_average_nees_bounds.lower,
+            t.time_average_nees_bounds.upper};
 }
 
 void MonteCarloSums::add_run(const RunRecord& record, const std::vector<StepSample>& samples) {
@@ -259,6 +285,7 @@ MonteCarloSummary summarize(const MonteCarloSums& sums, double control_period) {
         nees_steps > 0 ? static_cast<double>(nees_inside) / static_cast<double>(nees_steps) : kNan;
     summary.nis_inside_fraction =
         nis_steps > 0 ? static_cast<double>(nis_inside) / static_cast<double>(nis_steps) : kNan;
+    add_time_average_bounds(summary, sums.runs);
     summary.runs_finished = static_cast<std::size_t>(std::count_if(
         sums.runs.begin(), sums.runs.end(), [](const RunRecord& r) { return r.routine_finished; }));
     summary.rms_position_error = describe(column(sums.runs, &RunRecord::rms_position_error));

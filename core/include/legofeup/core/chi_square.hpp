@@ -22,4 +22,14 @@ struct ChiSquareInterval {
 /// (Bar-Shalom, Li & Kirubarajan, §5.4).
 ChiSquareInterval average_chi_square_interval(int dof, int count, double confidence = 0.95);
 
+/// Two-sided `confidence` interval for a time average of correlated χ²(dof) values worth
+/// `effective_samples` independent ones (effective_samples.hpp): the average of N_eff
+/// independent χ²(dof) values is χ²(N_eff·dof)/N_eff, so
+///   [χ²_{α/2}(N_eff·dof) / N_eff, χ²_{1−α/2}(N_eff·dof) / N_eff],
+/// N_eff any real ≥ 1 (χ² of a non-integer number of degrees of freedom is the gamma
+/// distribution it always was). The same mean (dof) and variance (2·dof/N_eff) as the time
+/// average of a consistent filter's NEES — a two-moment match, as Satterthwaite's.
+ChiSquareInterval time_average_chi_square_interval(int dof, double effective_samples,
+                                                   double confidence = 0.95);
+
 }  // namespace legofeup

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "legofeup/core/chi_square.hpp"
 #include "legofeup/core/ground_truth.hpp"
@@ -41,8 +42,17 @@ struct TruthMetrics {
     double rms_odometry_position_error = 0.0;
     double final_odometry_position_error = 0.0;
 
-    double mean_nees = 0.0;
-    double nees_inside_fraction = 0.0;  ///< share of steps with NEES inside RunMetrics::nees_bounds
+    double mean_nees = 0.0;  ///< the time average of the NEES over the steps
+    /// Share of steps whose own NEES lies inside RunMetrics::nees_bounds (one χ²(3) value):
+    /// about 0.95 for a consistent filter.
+    double nees_inside_fraction = 0.0;
+    /// How many independent values the run's correlated NEES series is worth, N_eff = N/τ, and
+    /// its autocorrelation time τ (effective_samples.hpp).
+    double nees_effective_samples = 0.0;
+    double nees_autocorrelation_time = 0.0;
+    /// The 95 % interval of mean_nees for a consistent filter: χ²(3·N_eff)/N_eff
+    /// (time_average_chi_square_interval). Not the bounds of one step, which are far wider.
+    ChiSquareInterval time_average_nees_bounds;
 
     // Heading of dead reckoning alone (the compass and gyro lessons compare against it).
     double rms_odometry_heading_error = 0.0;    ///< rad
@@ -110,8 +120,10 @@ struct RunMetrics {
     /// the updates have no effect.
     double rms_estimate_to_odometry = 0.0;  ///< m
 
-    ChiSquareInterval nees_bounds;  ///< 95 % two-sided interval of one χ²(3) value
-    double mean_nis = 0.0;          ///< over applied updates (χ²(2) when consistent)
+    /// 95 % two-sided interval of one χ²(3) value: what one step's NEES is compared with
+    /// (nees_inside_fraction), never an average (TruthMetrics::time_average_nees_bounds).
+    ChiSquareInterval nees_bounds;
+    double mean_nis = 0.0;  ///< over applied updates (χ²(2) when consistent)
 
     // Beacons (paper 002).
     std::uint64_t beacon_bearings = 0;         ///< sightings of known beacons
@@ -161,6 +173,7 @@ class RunMetricsAccumulator {
     double sum_odometry_squared_ = 0.0;
     double sum_nees_ = 0.0;
     std::uint64_t nees_count_ = 0;
+    std::vector<double> nees_series_;  // every finite NEES, in step order, for N_eff
     std::uint64_t nees_inside_ = 0;
     double sum_nis_ = 0.0;
     double sum_update_position_step_ = 0.0;

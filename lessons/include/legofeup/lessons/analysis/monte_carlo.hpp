@@ -71,6 +71,11 @@ struct RunRecord {
     double mean_nees = 0.0;
     double nees_inside_fraction = 0.0;
     double mean_nis = 0.0;
+    /// What the run's mean NEES is worth in independent samples, and the 95 % interval of that
+    /// time average for a consistent filter (TruthMetrics::time_average_nees_bounds).
+    double nees_effective_samples = 0.0;
+    double time_average_nees_lower = 0.0;
+    double time_average_nees_upper = 0.0;
 };
 
 RunRecord make_run_record(std::size_t index, std::uint64_t seed, const RunResult& result);
@@ -145,6 +150,13 @@ struct MonteCarloSummary {
     /// a consistent filter.
     double nees_inside_fraction = 0.0;
     double nis_inside_fraction = 0.0;
+    /// The 95 % interval of mean_nees (an average over runs and time) for a consistent filter:
+    /// χ²(3N)/N with N the runs' effective samples pooled with their steps as weights
+    /// (pooled_effective_samples).
+    ChiSquareInterval time_average_nees_bounds;
+    /// Share of runs whose own mean NEES lies inside its own time-average bounds; about 0.95
+    /// for a consistent filter.
+    double runs_nees_inside_time_average_fraction = 0.0;
 };
 
 /// The averages and aggregates of `sums`; `control_period` gives the steps' times.

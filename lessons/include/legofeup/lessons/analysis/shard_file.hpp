@@ -17,7 +17,7 @@
 
 namespace legofeup::lessons::analysis {
 
-inline constexpr int kShardFormatVersion = 1;
+inline constexpr int kShardFormatVersion = 2;
 
 nlohmann::json monte_carlo_shard(const BatchHeader& header, const Shard& shard,
                                  const MonteCarloSums& sums);
