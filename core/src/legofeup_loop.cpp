@@ -77,7 +77,7 @@ void LegoFeupLoop::reset() {
     fusion_.reset(x0, P0, kInitialVelocityVariance);
     laser_.reset();
     shadow_laser_.reset();
-    speeds_.reset(wrap_angle(initial.pose.theta));
+    speeds_.reset(initial.pose);
     odometry_pose_ = {initial.pose.x, initial.pose.y, wrap_angle(initial.pose.theta)};
     controller_ = config_.controller;
     have_counts_ = false;

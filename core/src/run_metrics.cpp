@@ -179,9 +179,18 @@ void RunMetricsAccumulator::add_speeds(const LoopSnapshot& snapshot, const Groun
         sum_wheel_kf_squared_ += kf * kf;
         sum_wheel_differentiated_squared_ += differentiated * differentiated;
     }
+    const auto squared = [](double a) { return a * a; };
+    const double odometry = pose_error(snapshot.odometry_pose, truth.pose).position();
+    const double wheel_kf = pose_error(speeds.wheel_kf_pose, truth.pose).position();
+    sum_wheel_kf_position_squared_ += squared(wheel_kf);
+    sum_speed_odometry_squared_ += squared(odometry);
+    t.final_wheel_kf_position_error = wheel_kf;
     if (speeds.body_kf_valid) {
         ++t.velocity_kf_steps;
-        const auto squared = [](double a) { return a * a; };
+        const double velocity_kf = pose_error(speeds.body_kf_pose, truth.pose).position();
+        sum_velocity_kf_position_squared_ += squared(velocity_kf);
+        sum_velocity_odometry_squared_ += squared(odometry);
+        t.final_velocity_kf_position_error = velocity_kf;
         sum_velocity_kf_squared_ += squared(speeds.body_kf.v - truth.velocity.v);
         sum_velocity_encoders_squared_ += squared(speeds.body_encoders.v - truth.velocity.v);
         sum_turn_rate_kf_squared_ += squared(speeds.body_kf.w - truth.velocity.w);
@@ -204,6 +213,16 @@ void RunMetricsAccumulator::finish_truth(TruthMetrics& t) const {
     t.rms_velocity_error_encoders = rms(sum_velocity_encoders_squared_, t.velocity_kf_steps);
     t.rms_turn_rate_error_kf = rms(sum_turn_rate_kf_squared_, t.velocity_kf_steps);
     t.rms_turn_rate_error_encoders = rms(sum_turn_rate_encoders_squared_, t.velocity_kf_steps);
+    t.rms_wheel_kf_position_error = rms(sum_wheel_kf_position_squared_, t.speed_steps);
+    t.rms_velocity_kf_position_error = rms(sum_velocity_kf_position_squared_, t.velocity_kf_steps);
+    // Ratios of RMS errors over the same steps (0 when odometry had no error at all).
+    const auto rms_ratio = [](double sum, double odometry_sum) {
+        return odometry_sum > 0.0 ? std::sqrt(sum / odometry_sum) : 0.0;
+    };
+    t.wheel_kf_position_to_odometry_ratio =
+        rms_ratio(sum_wheel_kf_position_squared_, sum_speed_odometry_squared_);
+    t.velocity_kf_position_to_odometry_ratio =
+        rms_ratio(sum_velocity_kf_position_squared_, sum_velocity_odometry_squared_);
     t.rms_compass_heading_error = rms(sum_compass_squared_, t.compass_steps);
     t.shadow_rms_position_error = rms(sum_shadow_position_squared_, t.shadow_steps);
     t.shadow_rms_heading_error = rms(sum_shadow_heading_squared_, t.shadow_steps);

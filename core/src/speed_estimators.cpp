@@ -37,10 +37,14 @@ void SpeedEstimators::configure(const LessonFilters& filters, const OdometryPara
     }
 }
 
-void SpeedEstimators::reset(double initial_heading) {
+void SpeedEstimators::reset(const Pose2& initial) {
     have_counts_ = false;
-    gyro_heading_ = initial_heading;
+    gyro_heading_ = wrap_angle(initial.theta);
+    wheel_kf_pose_ = {initial.x, initial.y, gyro_heading_};
+    body_kf_pose_ = wheel_kf_pose_;
     acceleration_ = {};
+    raw_accel_forward_ = {};
+    accel_bias_.reset();
     body_.reset();
 }
 
@@ -59,10 +63,17 @@ void SpeedEstimators::convert_extra_sensors(const SensorFrame& frame, double per
     acceleration_ = {};
     if (frame.has_accelerometers) {
         readings.has_accelerometers = true;
-        readings.accel_forward[kRight] =
+        raw_accel_forward_[kRight] =
             accel_from_raw(frame.accel_raw[kAccelRightWheel][kAccelForward], calibration);
-        readings.accel_forward[kLeft] =
+        raw_accel_forward_[kLeft] =
             accel_from_raw(frame.accel_raw[kAccelLeftWheel][kAccelForward], calibration);
+        // The bias learned from the frames before this one (so far as it is known).
+        if (calibration.remove_accel_bias) {
+            readings.accel_bias = accel_bias_.bias();
+        }
+        for (std::size_t i = 0; i < 2; ++i) {
+            readings.accel_forward[i] = raw_accel_forward_[i] - readings.accel_bias[i];
+        }
         acceleration_ = body_acceleration(readings.accel_forward[kRight],
                                           readings.accel_forward[kLeft], odometry_.wheel_base);
     }
@@ -110,6 +121,32 @@ void SpeedEstimators::step(const SensorFrame& frame, double period, SpeedEstimat
     }
     speeds.valid = true;
     last_counts_ = frame.encoder_counts;
+    integrate_poses(frame, period, speeds);
+    learn_accel_bias(readings, speeds, period);
+}
+
+void SpeedEstimators::integrate_poses(const SensorFrame& frame, double period,
+                                      SpeedEstimates& speeds) {
+    // Eq. 13 with each filter's (v, ω) over the period that just ended, as odometry does with
+    // the counts of that period: d = v·T, Δθ = ω·T.
+    const VelocityCommand wheel_kf = velocity_command(
+        WheelSpeeds{speeds.wheel_kf[kRight], speeds.wheel_kf[kLeft]}, odometry_.wheel_base);
+    wheel_kf_pose_ = advance_pose(wheel_kf_pose_, wheel_kf.v * period, wheel_kf.w * period);
+    if (frame.has_accelerometers) {
+        body_kf_pose_ =
+            advance_pose(body_kf_pose_, speeds.body_kf.v * period, speeds.body_kf.w * period);
+    }
+    speeds.wheel_kf_pose = wheel_kf_pose_;
+    speeds.body_kf_pose = body_kf_pose_;
+}
+
+void SpeedEstimators::learn_accel_bias(const ExtraReadings& readings, const SpeedEstimates& speeds,
+                                       double period) {
+    // This frame's readings against the wheels' speed change (accelerometer_bias.hpp); the
+    // wheel KF's speeds, whose error at the end points is smaller than the differenced ones'.
+    if (readings.has_accelerometers && filters_.calibration.remove_accel_bias) {
+        accel_bias_.add(raw_accel_forward_, speeds.wheel_kf, period);
+    }
 }
 
 }  // namespace legofeup

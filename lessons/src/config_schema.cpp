@@ -265,6 +265,11 @@ void add_lesson_filter_settings(std::vector<Setting>& s) {
         "calibration.accel_counts_per_g", "calibration.accel_counts_per_g",
         "accelerometer counts per g",
         [](auto& c) -> auto& { return c.lesson.calibration.accel_counts_per_g; }));
+    s.push_back(boolean(
+        "calibration.remove_accel_bias", "calibration.remove_accel_bias",
+        "remove the accelerometers' bias before use, estimated from the run's readings and "
+        "encoders; false: use the readings as they are",
+        [](auto& c) -> auto& { return c.lesson.calibration.remove_accel_bias; }));
 }
 
 // The simulated sensors of the further lessons (off unless enabled) and the displacement

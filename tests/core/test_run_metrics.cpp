@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "legofeup/core/ground_truth.hpp"
 #include "legofeup/core/run_metrics.hpp"
 
 namespace legofeup {
@@ -85,6 +86,35 @@ TEST(RunMetrics, ErrorsAreThePoseErrorOverTheStepsWithATruth) {
     // NEES of x̃ = (0.03, −0.04, −0.02) against diag(0.01, 0.04, 0.0004):
     // 0.09 + 0.04 + 1 = 1.13 on steps 0–8; (0.06, −0.08, −0.02): 0.36 + 0.16 + 1 = 1.52.
     EXPECT_NEAR(t.mean_nees, (9 * 1.13 + 1.52) / 10.0, 1e-9);
+}
+
+TEST(RunMetrics, SpeedFiltersIntegratedPositionsAgainstOdometryOverTheSameSteps) {
+    RunMetricsAccumulator metrics;
+    GroundTruth truth;
+    truth.pose = {1.0, 2.0, 0.5};
+    // Step 0: no speeds yet (not scored by the speed metrics, although odometry is 1 m off).
+    // Steps 1–4: odometry 0.1 m off in x, the wheel KF's pose 0.2 m off in y; the (v, ω)
+    // KF's 0.05 m off on steps 3 and 4 only (the frames before had no accelerometers).
+    LoopSnapshot first = step(0, truth.pose);
+    first.odometry_pose = {2.0, 2.0, 0.5};
+    metrics.add(first, truth);
+    for (int k = 1; k <= 4; ++k) {
+        LoopSnapshot s = step(k, truth.pose);
+        s.odometry_pose = {1.1, 2.0, 0.5};
+        s.speeds.valid = true;
+        s.speeds.wheel_kf_pose = {1.0, 2.2, 0.5};
+        s.speeds.body_kf_valid = k >= 3;
+        s.speeds.body_kf_pose = {1.0, 2.0 - 0.05 * (k - 2), 0.5};  // 0.05, then 0.1 m off
+        metrics.add(s, truth);
+    }
+    const TruthMetrics t = *metrics.result().truth;
+    EXPECT_NEAR(t.rms_wheel_kf_position_error, 0.2, 1e-12);
+    EXPECT_NEAR(t.final_wheel_kf_position_error, 0.2, 1e-12);
+    EXPECT_NEAR(t.wheel_kf_position_to_odometry_ratio, 2.0, 1e-12);  // 0.2 / 0.1, step 0 out
+    EXPECT_NEAR(t.rms_velocity_kf_position_error, std::sqrt((0.0025 + 0.01) / 2.0), 1e-12);
+    EXPECT_NEAR(t.final_velocity_kf_position_error, 0.1, 1e-12);
+    EXPECT_NEAR(t.velocity_kf_position_to_odometry_ratio, std::sqrt((0.0025 + 0.01) / 2.0) / 0.1,
+                1e-12);
 }
 
 }  // namespace

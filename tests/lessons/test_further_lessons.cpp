@@ -84,11 +84,11 @@ TEST_P(FurtherStepChecksDiscriminate, FailOnTheRunOfAnotherStep) {
     EXPECT_NE(failures(results), "");
 }
 
-// b (displacement) vs a (none); the gyro's step vs encoders only and back; the compass
-// against odometry alone and back.
+// b (displacement) vs a (none); encoders only vs the gyro's step (the other way round only
+// over seeds, test_speeds_lesson.cpp: on a seed where odometry is lucky the gyro is no
+// better); the compass against odometry alone and back.
 INSTANTIATE_TEST_SUITE_P(Further, FurtherStepChecksDiscriminate,
                          testing::Values(Discrimination{"beacons", "b", "a"},
-                                         Discrimination{"speeds", "d", "c"},
                                          Discrimination{"speeds", "c", "d"},
                                          Discrimination{"compass", "b", "a"},
                                          Discrimination{"compass", "a", "b"}));

@@ -108,6 +108,9 @@ struct ExtraSensorCalibration {
     double gyro_counts_per_dps = 1.0;  ///< counts per °/s
     double accel_counts_per_g = 200.0;
     double gravity = 9.80665;  ///< m/s²
+    /// Remove the accelerometers' bias before use (paper 003 §3.3), estimated from the run's
+    /// own readings and encoders (accelerometer_bias.hpp).
+    bool remove_accel_bias = true;
 };
 
 /// Laser scan matching against a map (paper 001): ray-cast the expected scan at the predicted

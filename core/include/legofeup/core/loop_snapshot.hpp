@@ -51,6 +51,11 @@ struct SpeedEstimates {
     VelocityCommand body_encoders;  ///< (v, ω) from differentiated encoders (eq. 14)
     bool body_kf_valid = false;     ///< the frame had accelerometers
     VelocityCommand body_kf;        ///< (v, ω) of the KF with accelerometer inputs (eq. 20–23)
+    /// Dead reckoning (eq. 13) from the initial pose with the wheel KF's speeds, and with
+    /// the (v, ω) KF's (while the frames have accelerometers): the positions the paper
+    /// compares with the raw encoders' (its figure 7).
+    Pose2 wheel_kf_pose;
+    Pose2 body_kf_pose;
 };
 
 /// The optional sensors converted to SI units (when the frame had them).
@@ -59,7 +64,8 @@ struct ExtraReadings {
     double gyro_rate = 0.0;     ///< rad/s, calibrated (offset removed)
     double gyro_heading = 0.0;  ///< rad, the gyro rate integrated from the initial heading
     bool has_accelerometers = false;
-    std::array<double, 2> accel_forward{};  ///< m/s² [right unit, left unit]
+    std::array<double, 2> accel_forward{};  ///< m/s² [right unit, left unit], bias removed
+    std::array<double, 2> accel_bias{};     ///< m/s², the bias removed (0 when not estimated)
     bool has_compass = false;
     double compass_heading = 0.0;  ///< rad in (−π, π]
 };

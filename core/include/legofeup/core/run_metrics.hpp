@@ -68,6 +68,15 @@ struct TruthMetrics {
     double rms_velocity_error_encoders = 0.0;   ///< v from differentiated encoders, m/s
     double rms_turn_rate_error_kf = 0.0;        ///< ω of the accelerometer KF, rad/s
     double rms_turn_rate_error_encoders = 0.0;  ///< ω from differentiated encoders, rad/s
+    // The speed filters' integrated poses (SpeedEstimates::wheel_kf_pose, body_kf_pose), and
+    // the RMS position error of each over the RMS error of odometry (the raw encoders) over
+    // the same steps: below 1 the filter's speeds give a better position than the counts.
+    double rms_wheel_kf_position_error = 0.0;    ///< m, over speed_steps
+    double final_wheel_kf_position_error = 0.0;  ///< m
+    double wheel_kf_position_to_odometry_ratio = 0.0;
+    double rms_velocity_kf_position_error = 0.0;    ///< m, over velocity_kf_steps
+    double final_velocity_kf_position_error = 0.0;  ///< m
+    double velocity_kf_position_to_odometry_ratio = 0.0;
 
     // Raw heading sensors against the truth (when the frames had them).
     std::uint64_t compass_steps = 0;
@@ -187,6 +196,10 @@ class RunMetricsAccumulator {
     double sum_velocity_encoders_squared_ = 0.0;
     double sum_turn_rate_kf_squared_ = 0.0;
     double sum_turn_rate_encoders_squared_ = 0.0;
+    double sum_wheel_kf_position_squared_ = 0.0;
+    double sum_speed_odometry_squared_ = 0.0;  // odometry over speed_steps
+    double sum_velocity_kf_position_squared_ = 0.0;
+    double sum_velocity_odometry_squared_ = 0.0;  // odometry over velocity_kf_steps
     double sum_compass_squared_ = 0.0;
     double sum_shadow_position_squared_ = 0.0;
     double sum_shadow_heading_squared_ = 0.0;
