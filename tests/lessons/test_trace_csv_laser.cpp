@@ -26,14 +26,19 @@ const std::vector<std::string> kLaserColumns = {
     "laser_recovery",       "laser_innovation_x",  "laser_innovation_y",   "laser_innovation_theta",
     "laser_observed_x",     "laser_observed_y",    "laser_observed_theta", "laser_nis"};
 
-TEST(TraceCsvLaser, TheLaserColumnsComeAfterTheFurtherLessonsAndBeforeTheGlitchFlag) {
+// The columns after the laser lesson's: the loop's glitch flag, then the association gate's.
+const std::vector<std::string> kLastColumns = {"odometry_glitch", "association_gate",
+                                               "association_d2", "association_d2_threshold"};
+
+TEST(TraceCsvLaser, TheLaserColumnsComeAfterTheFurtherLessonsAndBeforeTheLoopsOwn) {
     const std::vector<std::string> names = cells_of(trace_csv_header());
-    ASSERT_GE(names.size(), kLaserColumns.size() + 2);
-    EXPECT_EQ(names.back(), "odometry_glitch");
-    const std::vector<std::string> laser(
-        names.end() - static_cast<std::ptrdiff_t>(kLaserColumns.size()) - 1, names.end() - 1);
+    const auto last = static_cast<std::ptrdiff_t>(kLastColumns.size());
+    const auto laser_count = static_cast<std::ptrdiff_t>(kLaserColumns.size());
+    ASSERT_GE(names.size(), kLaserColumns.size() + kLastColumns.size() + 1);
+    EXPECT_EQ(std::vector<std::string>(names.end() - last, names.end()), kLastColumns);
+    const std::vector<std::string> laser(names.end() - last - laser_count, names.end() - last);
     EXPECT_EQ(laser, kLaserColumns);
-    EXPECT_EQ(names[names.size() - kLaserColumns.size() - 2], "wheel_left_true");
+    EXPECT_EQ(*(names.end() - last - laser_count - 1), "wheel_left_true");
 }
 
 LoopSnapshot laser_step(std::uint64_t step) {
@@ -162,6 +167,29 @@ TEST(TraceCsvLaser, AnUpdateRejectedByTheFilterHasNoNis) {
     EXPECT_EQ(rows[0].at("laser_update"), to_string(StepStatus::RejectedByGate));
     EXPECT_EQ(rows[0].at("laser_observed_y"), "2");
     EXPECT_EQ(rows[0].at("laser_nis"), "");
+}
+
+TEST(TraceCsvLaser, TheAssociationGateColumnsCarryTheCandidatesD2AndThreshold) {
+    const LoopConfig loop;
+    std::ostringstream csv;
+    TraceCsvWriter writer(csv, loop);
+    LoopSnapshot s = laser_step(1);
+    writer.on_step(s, GroundTruth{});  // no candidate wall: empty cells
+    s.association.outcome = AssociationOutcome::MahalanobisMismatch;
+    s.association.gate = AssociationGate::Mahalanobis;
+    s.association.wall = 0;
+    s.association.mahalanobis_d2 = 136.25;
+    s.association.mahalanobis_threshold = 9.21034037;
+    writer.on_step(s, GroundTruth{});
+    const auto rows = rows_of(csv.str());
+    ASSERT_EQ(rows.size(), 2U);
+    EXPECT_EQ(rows[0].at("association_gate"), "");
+    EXPECT_EQ(rows[0].at("association_d2"), "");
+    EXPECT_EQ(rows[0].at("association_d2_threshold"), "");
+    EXPECT_EQ(rows[1].at("association"), "Mahalanobis distance above the gate");
+    EXPECT_EQ(rows[1].at("association_gate"), "mahalanobis");
+    EXPECT_EQ(rows[1].at("association_d2"), "136.25");
+    EXPECT_EQ(rows[1].at("association_d2_threshold"), "9.21034037");
 }
 
 TEST(TraceCsvLaser, TheGlitchFlagMarksTheStepsWhoseCountsWereNotUsed) {
