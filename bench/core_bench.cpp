@@ -95,11 +95,12 @@ BENCHMARK(BM_EkfPredict)->Repetitions(10)->ReportAggregatesOnly(true);
 void BM_WallAssociation(benchmark::State& state) {
     const LoopConfig config;
     const WallObservation observation = observe_wall(0.151, 0.149, config.ir_mount);
-    const Pose2 estimate{-0.5, -1.0, 0.01};
+    const PoseBelief belief{{-0.5, -1.0, 0.01}, StateVector(1e-4, 1e-4, 1e-3).asDiagonal()};
+    const Eigen::Matrix2d R = Eigen::Vector2d(config.filter.r11, config.filter.r22).asDiagonal();
     for (auto _ : state) {
         const AssociationResult result =
-            associate_wall(estimate, observation, config.walls, config.ir_mount,
-                           config.ir_curve.max_range, config.association);
+            associate_wall(belief, observation, config.walls, config.ir_mount,
+                           config.ir_curve.max_range, R, config.association);
         benchmark::DoNotOptimize(result.wall);
     }
 }

@@ -262,9 +262,9 @@ void LegoFeupLoop::update_with_walls(PoseFilter& filter, bool primary) {
         return;
     }
     // Fig. 4: which wall, judged from this filter's current (predicted) estimate.
-    const AssociationResult association =
-        associate_wall(to_pose(filter.state()), s.observation, config_.walls, config_.ir_mount,
-                       config_.ir_curve.max_range, config_.association);
+    const AssociationResult association = associate_wall(
+        {to_pose(filter.state()), filter.covariance()}, s.observation, config_.walls,
+        config_.ir_mount, config_.ir_curve.max_range, ir_noise_, config_.association);
     if (primary) {
         s.association = association;
     }

@@ -221,6 +221,9 @@ std::vector<ConfigIssue> validate(const LoopConfig& config) {
     check.positive("association.max_incidence", assoc.max_incidence, 0.5 * kPi);
     check.positive("association.max_angle_error", assoc.max_angle_error, kPi);
     check.positive("association.max_distance_error", assoc.max_distance_error, 10.0);
+    check.require(assoc.gate_probability > 0.0 && assoc.gate_probability < 1.0,
+                  "association.gate_probability", assoc.gate_probability,
+                  "must be strictly between 0 and 1");
 
     const FilterTuning& filter = config.filter;
     check_variance(check, "filter.q11", filter.q11);

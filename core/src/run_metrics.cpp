@@ -9,7 +9,7 @@
 
 namespace legofeup {
 
-static_assert(static_cast<int>(AssociationOutcome::DistanceMismatch) + 1
+static_assert(static_cast<int>(AssociationOutcome::MahalanobisMismatch) + 1
                   == kAssociationOutcomeCount,
               "kAssociationOutcomeCount must count every AssociationOutcome");
 

@@ -1,11 +1,58 @@
 #include "legofeup/core/wall_association.hpp"
 
+#include <Eigen/Cholesky>
 #include <cmath>
 #include <limits>
 
+#include "legofeup/core/chi_square.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
 namespace legofeup {
+namespace {
+
+// d² = νᵀS⁻¹ν of `measurement` against the belief: ν = z − ∇h_X X̂ (θ wrapped),
+// S = ∇h_X P ∇h_Xᵀ + ∇h_r R ∇h_rᵀ, solved with LDLT (never an inverse). The model is linear,
+// so this is the NIS the EKF's update (and the UKF's, whose sigma points reproduce a linear
+// h exactly) computes for the same wall. Infinite when S is not positive definite.
+double mahalanobis_distance_squared(const PoseBelief& belief, const WallMeasurement& measurement) {
+    const StateVector x = to_state(belief.pose);
+    const WallMeasurement::Vector innovation =
+        measurement.residual(measurement.measurement(), measurement.predict_measurement(x));
+    const WallMeasurement::Jacobian& H = measurement.jacobian(x);
+    const Eigen::Matrix2d S =
+        H * belief.covariance * H.transpose() + measurement.noise_covariance();
+    const Eigen::LDLT<Eigen::Matrix2d> ldlt(S);
+    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0.0).all()) {
+        return std::numeric_limits<double>::infinity();
+    }
+    const double d2 = innovation.dot(ldlt.solve(innovation));
+    return std::isfinite(d2) ? d2 : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+const char* to_string(AssociationGate gate) {
+    switch (gate) {
+        case AssociationGate::Fixed:
+            return "fixed";
+        case AssociationGate::Mahalanobis:
+            return "mahalanobis";
+    }
+    return "unknown";
+}
+
+std::optional<AssociationGate> association_gate_from_string(std::string_view text) {
+    for (const AssociationGate gate : {AssociationGate::Fixed, AssociationGate::Mahalanobis}) {
+        if (text == to_string(gate)) {
+            return gate;
+        }
+    }
+    return std::nullopt;
+}
+
+double association_gate_threshold(double probability) {
+    return chi_square_quantile(probability, WallMeasurement::kSize);
+}
 
 const char* to_string(AssociationOutcome outcome) {
     switch (outcome) {
@@ -21,15 +68,20 @@ const char* to_string(AssociationOutcome outcome) {
             return "angle does not match the predicted wall";
         case AssociationOutcome::DistanceMismatch:
             return "distance does not match the predicted wall";
+        case AssociationOutcome::MahalanobisMismatch:
+            return "Mahalanobis distance above the gate";
     }
     return "unknown";
 }
 
-AssociationResult associate_wall(const Pose2& estimate, const WallObservation& observation,
+AssociationResult associate_wall(const PoseBelief& belief, const WallObservation& observation,
                                  const WallMap& walls, const IrMount& mount, double ir_max_range,
+                                 const Eigen::Matrix2d& ir_covariance,
                                  const AssociationParams& params) {
+    const Pose2& estimate = belief.pose;
     AssociationResult result;
     result.outcome = AssociationOutcome::NoWallInView;
+    result.gate = params.gate;
 
     const IrBeam front = ir_beam(estimate, mount, kFrontSensor);
     const IrBeam rear = ir_beam(estimate, mount, kRearSensor);
@@ -64,9 +116,18 @@ AssociationResult associate_wall(const Pose2& estimate, const WallObservation& o
     result.predicted_distance = result.side * line.signed_distance(position_of(estimate));
     result.angle_error = wrap_angle(observation.angle - result.predicted_angle);
     result.distance_error = observation.centre_distance - result.predicted_distance;
+    result.mahalanobis_d2 = mahalanobis_distance_squared(
+        belief, WallMeasurement(line, result.side, observation, ir_covariance));
+    result.mahalanobis_threshold = association_gate_threshold(params.gate_probability);
 
+    // 3. The gate. The incidence test is geometry (the two beams must meet one straight
+    // wall), not a test of fit, so it comes first under either gate.
     if (std::abs(result.predicted_angle) > params.max_incidence) {
         result.outcome = AssociationOutcome::ObliqueIncidence;
+    } else if (params.gate == AssociationGate::Mahalanobis) {
+        result.outcome = result.mahalanobis_d2 <= result.mahalanobis_threshold
+                             ? AssociationOutcome::Associated
+                             : AssociationOutcome::MahalanobisMismatch;
     } else if (std::abs(result.angle_error) > params.max_angle_error) {
         result.outcome = AssociationOutcome::AngleMismatch;
     } else if (std::abs(result.distance_error) > params.max_distance_error) {

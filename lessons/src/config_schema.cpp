@@ -826,6 +826,16 @@ std::vector<Setting> make_settings() {
         "association.max_distance_error", "association.max_distance_error",
         "largest accepted wall distance error, m",
         [](auto& c) -> auto& { return c.association.max_distance_error; }));
+    s.push_back(choice(
+        "association.gate", "association.gate",
+        "which test takes a wall: fixed (the paper's: the angle and distance errors under the "
+        "limits above) or mahalanobis (νᵀS⁻¹ν with S = HPHᵀ + R under the χ²(2) quantile)",
+        {AssociationGate::Fixed, AssociationGate::Mahalanobis}, association_gate_from_string,
+        [](auto& c) -> auto& { return c.association.gate; }));
+    s.push_back(real(
+        "association.gate_probability", "association.gate_probability",
+        "probability of the Mahalanobis association gate, in (0, 1)",
+        [](auto& c) -> auto& { return c.association.gate_probability; }));
 
     // [simulator] — the simulated robot's errors, noise, body and motors.
     const auto physical = [&s](std::string name, std::string help, auto access) {

@@ -110,6 +110,17 @@ void laser_cells(std::ostream& out, const LoopSnapshot& s) {
     number(out, used && laser.status == StepStatus::Applied ? laser.nis : kNone);
 }
 
+/// The wall association's gate and the candidate wall's d² = νᵀS⁻¹ν with the χ²(2) threshold
+/// (computed under either gate); empty without a candidate wall. The last cells of a row.
+void association_gate_cells(std::ostream& out, const LoopSnapshot& s) {
+    const AssociationResult& a = s.association;
+    const bool candidate = a.wall >= 0;
+    out << (candidate ? to_string(a.gate) : "") << ',';
+    number_if(out, candidate, a.mahalanobis_d2);
+    cell(out, candidate ? a.mahalanobis_threshold : kNone);
+    out << '\n';
+}
+
 }  // namespace
 
 const char* trace_csv_header() {
@@ -128,7 +139,9 @@ const char* trace_csv_header() {
            "laser_innovation_x,laser_innovation_y,laser_innovation_theta,"
            "laser_observed_x,laser_observed_y,laser_observed_theta,laser_nis,"
            // The loop's own checks of its inputs.
-           "odometry_glitch,prediction";
+           "odometry_glitch,prediction,"
+           // The wall association's gate (docs/loop.md, "Wall association").
+           "association_gate,association_d2,association_d2_threshold";
 }
 
 TraceCsvWriter::TraceCsvWriter(std::ostream& out, const LoopConfig& loop) : out_(out), loop_(loop) {
@@ -169,8 +182,8 @@ void TraceCsvWriter::on_step(const LoopSnapshot& s, const GroundTruth& truth) {
     further_lesson_cells(out_, s, truth);
     laser_cells(out_, s);
     out_ << (s.odometry_glitch ? 1 : 0) << ',';
-    // The last cell: no comma after it.
-    out_ << to_string(s.predict_status) << '\n';
+    out_ << to_string(s.predict_status) << ',';
+    association_gate_cells(out_, s);  // the last cells, and the end of the row
 }
 
 }  // namespace legofeup::lessons

@@ -61,11 +61,11 @@ std::string scaled_reference(double k) {
     return text;
 }
 
-TEST(LegoFeupLesson, HasSixStepsWithTextsQuestionsChecksAndGrading) {
+TEST(LegoFeupLesson, HasEightStepsWithTextsQuestionsChecksAndGrading) {
     const Lesson& lesson = legofeup_lesson();
     EXPECT_EQ(lesson.id, "legofeup");
     EXPECT_FALSE(lesson.goals.empty());
-    ASSERT_EQ(lesson.steps.size(), 6u);
+    ASSERT_EQ(lesson.steps.size(), 8u);  // the paper's a–f, and g–h: a bump, two gates
     for (const LessonStep& s : lesson.steps) {
         EXPECT_FALSE(s.observe.empty()) << s.id;
         EXPECT_GE(s.questions.size(), 2u) << s.id;
@@ -110,7 +110,8 @@ TEST_P(StepChecks, PassForItsOwnPresetOnSeedsOneAndTwo) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(LegoFeup, StepChecks, ::testing::Values("a", "b", "c", "d", "e", "f"));
+INSTANTIATE_TEST_SUITE_P(LegoFeup, StepChecks,
+                         ::testing::Values("a", "b", "c", "d", "e", "f", "g", "h"));
 
 // Each step's checks capture what that step shows: on the run of a step it must be told
 // from, at least one of them fails.
@@ -141,7 +142,8 @@ INSTANTIATE_TEST_SUITE_P(
                       ChecksOnRun{"d", "f"},  // trusting odometry: a tuned filter moves at walls
                       ChecksOnRun{"e", "f"},  // distrusting odometry: a tuned filter is not lost
                       ChecksOnRun{"f", "c"},  // tuned: none of the badly tuned filters passes
-                      ChecksOnRun{"f", "d"}, ChecksOnRun{"f", "e"}));
+                      ChecksOnRun{"f", "d"}, ChecksOnRun{"f", "e"},
+                      ChecksOnRun{"h", "g"}));  // Mahalanobis gate: the fixed gates do not
 
 TEST(LegoFeupLesson, GradingPassesTheReferenceTuningOnUnseenSeeds) {
     const nlohmann::json grade = grade_of(submission_of(scaled_reference(1.0)), 3);

@@ -26,18 +26,20 @@ const std::vector<std::string> kLaserColumns = {
     "laser_recovery",       "laser_innovation_x",  "laser_innovation_y",   "laser_innovation_theta",
     "laser_observed_x",     "laser_observed_y",    "laser_observed_theta", "laser_nis"};
 
-// The loop's own checks of its inputs and steps, last in every row.
-const std::vector<std::string> kLoopCheckColumns = {"odometry_glitch", "prediction"};
+// The columns after the laser lesson's: the loop's glitch flag and how it predicted, then the
+// association gate's.
+const std::vector<std::string> kLastColumns = {"odometry_glitch", "prediction", "association_gate",
+                                               "association_d2", "association_d2_threshold"};
 
-TEST(TraceCsvLaser, TheLaserColumnsComeAfterTheFurtherLessonsAndBeforeTheLoopsChecks) {
+TEST(TraceCsvLaser, TheLaserColumnsComeAfterTheFurtherLessonsAndBeforeTheLoopsOwn) {
     const std::vector<std::string> names = cells_of(trace_csv_header());
-    const auto checks = static_cast<std::ptrdiff_t>(kLoopCheckColumns.size());
-    const auto laser_size = static_cast<std::ptrdiff_t>(kLaserColumns.size());
-    ASSERT_GE(names.size(), kLaserColumns.size() + kLoopCheckColumns.size() + 1);
-    EXPECT_EQ(std::vector<std::string>(names.end() - checks, names.end()), kLoopCheckColumns);
-    const std::vector<std::string> laser(names.end() - checks - laser_size, names.end() - checks);
+    const auto last = static_cast<std::ptrdiff_t>(kLastColumns.size());
+    const auto laser_count = static_cast<std::ptrdiff_t>(kLaserColumns.size());
+    ASSERT_GE(names.size(), kLaserColumns.size() + kLastColumns.size() + 1);
+    EXPECT_EQ(std::vector<std::string>(names.end() - last, names.end()), kLastColumns);
+    const std::vector<std::string> laser(names.end() - last - laser_count, names.end() - last);
     EXPECT_EQ(laser, kLaserColumns);
-    EXPECT_EQ(*(names.end() - checks - laser_size - 1), "wheel_left_true");
+    EXPECT_EQ(*(names.end() - last - laser_count - 1), "wheel_left_true");
 }
 
 LoopSnapshot laser_step(std::uint64_t step) {
@@ -166,6 +168,29 @@ TEST(TraceCsvLaser, AnUpdateRejectedByTheFilterHasNoNis) {
     EXPECT_EQ(rows[0].at("laser_update"), to_string(StepStatus::RejectedByGate));
     EXPECT_EQ(rows[0].at("laser_observed_y"), "2");
     EXPECT_EQ(rows[0].at("laser_nis"), "");
+}
+
+TEST(TraceCsvLaser, TheAssociationGateColumnsCarryTheCandidatesD2AndThreshold) {
+    const LoopConfig loop;
+    std::ostringstream csv;
+    TraceCsvWriter writer(csv, loop);
+    LoopSnapshot s = laser_step(1);
+    writer.on_step(s, GroundTruth{});  // no candidate wall: empty cells
+    s.association.outcome = AssociationOutcome::MahalanobisMismatch;
+    s.association.gate = AssociationGate::Mahalanobis;
+    s.association.wall = 0;
+    s.association.mahalanobis_d2 = 136.25;
+    s.association.mahalanobis_threshold = 9.21034037;
+    writer.on_step(s, GroundTruth{});
+    const auto rows = rows_of(csv.str());
+    ASSERT_EQ(rows.size(), 2U);
+    EXPECT_EQ(rows[0].at("association_gate"), "");
+    EXPECT_EQ(rows[0].at("association_d2"), "");
+    EXPECT_EQ(rows[0].at("association_d2_threshold"), "");
+    EXPECT_EQ(rows[1].at("association"), "Mahalanobis distance above the gate");
+    EXPECT_EQ(rows[1].at("association_gate"), "mahalanobis");
+    EXPECT_EQ(rows[1].at("association_d2"), "136.25");
+    EXPECT_EQ(rows[1].at("association_d2_threshold"), "9.21034037");
 }
 
 TEST(TraceCsvLaser, TheGlitchFlagMarksTheStepsWhoseCountsWereNotUsed) {

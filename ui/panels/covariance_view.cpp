@@ -99,17 +99,72 @@ void CovarianceView::showLatest() {
         showLaserUpdate();
         return;
     }
+    update_->setText(wallUpdateText(snapshot, history_.scene()));
+}
+
+QString CovarianceView::updateText() const {
+    return update_->text();
+}
+
+QString CovarianceView::wallUpdateText(const LoopSnapshot& snapshot, const ArenaScene& scene) {
     const WallUpdateReport& update = snapshot.update;
+    const QString time = QString::number(snapshot.time, 'f', 2);
     if (update.status == StepStatus::Applied) {
-        update_->setText(tr("t = %1 s: wall update, innovation (%2 m, %3°), NIS %4")
-                             .arg(snapshot.time, 0, 'f', 2)
-                             .arg(update.innovation(0), 0, 'f', 4)
-                             .arg(update.innovation(1) * 180.0 / kPi, 0, 'f', 2)
-                             .arg(update.nis, 0, 'f', 2));
-    } else {
-        update_->setText(
-            tr("t = %1 s: prediction only (no wall update)").arg(snapshot.time, 0, 'f', 2));
+        return tr("t = %1 s: wall update, innovation (%2 m, %3°), NIS %4")
+            .arg(time)
+            .arg(update.innovation(0), 0, 'f', 4)
+            .arg(update.innovation(1) * 180.0 / kPi, 0, 'f', 2)
+            .arg(update.nis, 0, 'f', 2);
     }
+    const AssociationResult& a = snapshot.association;
+    const auto index = static_cast<std::size_t>(a.wall);
+    const QString wall = a.wall >= 0 && index < scene.walls.size()
+                             ? QString::fromStdString(scene.walls[index].name)
+                             : QString::number(a.wall);
+    const AssociationParams& limits = scene.association;
+    switch (a.outcome) {
+        case AssociationOutcome::AngleMismatch:
+            return tr("t = %1 s: prediction only: %2 refused by the fixed angle gate (ObsAng "
+                      "error %3°, limit %4°).")
+                .arg(time, wall)
+                .arg(a.angle_error * 180.0 / kPi, 0, 'f', 1)
+                .arg(limits.max_angle_error * 180.0 / kPi, 0, 'f', 1);
+        case AssociationOutcome::DistanceMismatch:
+            return tr("t = %1 s: prediction only: %2 refused by the fixed distance gate (D_c "
+                      "error %3 cm, limit %4 cm; the Mahalanobis d² would be %5).")
+                .arg(time, wall)
+                .arg(100.0 * a.distance_error, 0, 'f', 1)
+                .arg(100.0 * limits.max_distance_error, 0, 'f', 1)
+                .arg(a.mahalanobis_d2, 0, 'f', 1);
+        case AssociationOutcome::MahalanobisMismatch:
+            return tr("t = %1 s: prediction only: %2 refused by the Mahalanobis gate (d² = %3 "
+                      "above χ²(2) = %4 at p = %5).")
+                .arg(time, wall)
+                .arg(a.mahalanobis_d2, 0, 'f', 1)
+                .arg(a.mahalanobis_threshold, 0, 'f', 2)
+                .arg(limits.gate_probability, 0, 'g', 3);
+        case AssociationOutcome::ObliqueIncidence:
+            return tr("t = %1 s: prediction only: %2 is seen too obliquely to use.")
+                .arg(time, wall);
+        case AssociationOutcome::Associated:
+            if (update.status == StepStatus::RejectedByGate) {
+                return tr("t = %1 s: prediction only: %2 associated, but the NIS gate refused "
+                          "the update (NIS %3).")
+                    .arg(time, wall)
+                    .arg(update.nis, 0, 'f', 1);
+            }
+            if (update.status == StepStatus::NotAttempted) {
+                return tr("t = %1 s: prediction only: %2 associated, but wall updates are off.")
+                    .arg(time, wall);
+            }
+            return tr("t = %1 s: prediction only: %2 associated, but the update was refused "
+                      "as numerically unsafe.")
+                .arg(time, wall);
+        case AssociationOutcome::NoObservation:
+        case AssociationOutcome::NoWallInView:
+            break;
+    }
+    return tr("t = %1 s: prediction only (no wall update)").arg(time);
 }
 
 void CovarianceView::showLaserUpdate() {

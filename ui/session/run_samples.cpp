@@ -35,6 +35,7 @@ ArenaScene scene_of(const lessons::ResolvedRun& run) {
     }
     scene.ir_mount = run.loop.ir_mount;
     scene.ir_max_range = run.loop.ir_curve.max_range;
+    scene.association = run.loop.association;
     scene.control_period = run.config.simulator.control_period;
     // The beacons only where the filter uses them: the standard arena has them too, and
     // the wall lesson keeps the paper's look.

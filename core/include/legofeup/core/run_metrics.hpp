@@ -15,7 +15,7 @@
 
 namespace legofeup {
 
-inline constexpr int kAssociationOutcomeCount = 6;
+inline constexpr int kAssociationOutcomeCount = 7;
 
 /// A truth pose that moves farther than this in one step was carried, not driven (a
 /// kidnapping: the robot's top speed, 0.38 m/s, covers 2 cm in a 50 ms period).

@@ -53,6 +53,7 @@ struct ArenaScene {
     std::vector<PathSegment> path;  ///< the intended path; empty when driving by hand
     IrMount ir_mount;               ///< where the IR sensors sit, to draw their rays
     double ir_max_range = 0.8;      ///< m: the trusted IR range
+    AssociationParams association;  ///< the wall association's gate and its limits
     double control_period = 0.05;   ///< s
     /// The world's bearing-only beacons (paper 002) when the run localises with them.
     BeaconMap beacons;

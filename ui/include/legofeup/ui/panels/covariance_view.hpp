@@ -1,16 +1,23 @@
 #pragma once
 // The covariance matrix P of the latest step, shown numerically (paper Fig. 9 a), with the
 // standard deviations and the step's wall update: what a student reads off while the ellipse
-// grows and collapses.
+// grows and collapses. A wall the association refused is named with the test that refused it
+// (the fixed angle or distance gate with its error and limit, or the Mahalanobis gate with
+// d² and its χ² threshold).
 
 #include <QWidget>
 #include <array>
 
 class QLabel;
 
+namespace legofeup {
+struct LoopSnapshot;
+}
+
 namespace legofeup::ui {
 
 class RunHistory;
+struct ArenaScene;
 
 class CovarianceView : public QWidget {
     Q_OBJECT
@@ -20,6 +27,11 @@ class CovarianceView : public QWidget {
 
     /// The text shown in cell (row, column) of P.
     QString cellText(int row, int column) const;
+    /// The line under the σs: the step's wall update, or why there was none.
+    QString updateText() const;
+
+    /// What the association and the update of a wall-lesson step did, as that line says it.
+    static QString wallUpdateText(const LoopSnapshot& snapshot, const ArenaScene& scene);
 
   public slots:
     void historyRestarted();
