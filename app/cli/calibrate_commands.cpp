@@ -2,11 +2,14 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <optional>
+#include <span>
 
 #include "commands.hpp"
 #include "legofeup/core/angles.hpp"
@@ -148,28 +151,69 @@ void print_ir_fit(const std::string& source, const std::vector<lessons::IrCalibr
     }
 }
 
+// The fit names points by number: say which file (and which sensor's points) they are in.
+lessons::IrFit fit_ir_points(std::span<const lessons::IrCalibrationPoint> points,
+                             const SharpIrCurve& start, const std::string& source) {
+    try {
+        return lessons::fit_ir_curve(points, start);
+    } catch (const InputError& error) {
+        std::vector<lessons::InputProblem> problems = error.problems();
+        for (lessons::InputProblem& problem : problems) {
+            problem.source = problem.source.empty() ? source : problem.source;
+        }
+        throw InputError(std::move(problems));
+    }
+}
+
+// A fit that did not converge, or a curve the loop would refuse, is reported: false.
+bool usable_fit(const lessons::IrFit& fit, const std::string& name) {
+    if (!fit.converged) {
+        std::cerr << "error: the fit of " << name << " did not converge; the profile was not "
+                  << "changed. Check the measurements (metres, the whole 4-30 cm range)\n";
+        return false;
+    }
+    const auto issues = validate(fit.curve, name);
+    for (const ConfigIssue& issue : issues) {
+        std::cerr << "error: fitted " << issue.message() << '\n';
+    }
+    if (!issues.empty()) {
+        std::cerr << "The fitted curve is not usable; the profile was not changed.\n";
+    }
+    return issues.empty();
+}
+
+std::string sensor_points_source(const std::string& file, IrSensor sensor) {
+    return file + (sensor == kFrontSensor ? " (front sensor's points)" : " (rear sensor's points)");
+}
+
 int calibrate_ir(const CalibrateOptions& options) {
     std::vector<lessons::IrCalibrationPoint> points;
     RobotProfile profile;
-    lessons::IrFit fit;
+    lessons::IrFit fit;  // all points: the one curve of both sensors (the paper's)
+    // Each sensor's own curve, from its points when the file says which sensor took them.
+    std::array<std::optional<lessons::IrFit>, kIrSensorCount> sensor_fits;
     try {
         points = lessons::read_ir_points_csv(options.points_file);
         profile = starting_profile(options.profile);
-        try {
-            fit = lessons::fit_ir_curve(points, profile.ir_curve);
-        } catch (const InputError& error) {
-            // The fit names points by number: say which file they are in.
-            std::vector<lessons::InputProblem> problems = error.problems();
-            for (lessons::InputProblem& problem : problems) {
-                problem.source = problem.source.empty() ? options.points_file : problem.source;
+        fit = fit_ir_points(points, profile.ir_curve, options.points_file);
+        for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+            const auto own = lessons::points_of(points, sensor);
+            if (!own.empty()) {
+                sensor_fits[static_cast<std::size_t>(sensor)] = fit_ir_points(
+                    own, profile.ir_curve, sensor_points_source(options.points_file, sensor));
             }
-            throw InputError(std::move(problems));
         }
     } catch (const InputError& error) {
         report(error);
         return kExitBadInput;
     }
     print_ir_fit(options.points_file, points, fit);
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        if (const auto& own = sensor_fits[static_cast<std::size_t>(sensor)]) {
+            print_ir_fit(sensor_points_source(options.points_file, sensor),
+                         lessons::points_of(points, sensor), *own);
+        }
+    }
 
     if (!options.plot_directory.empty()) {
         try {
@@ -182,20 +226,22 @@ int calibrate_ir(const CalibrateOptions& options) {
             return kExitOutputFailed;
         }
     }
-    if (!fit.converged) {
-        std::cerr << "error: the fit did not converge; the profile was not changed. Check the "
-                     "measurements (metres, one sensor, the whole 4-30 cm range)\n";
-        return kExitBadInput;
-    }
-    const auto issues = validate(fit.curve, "ir_curve");
-    if (!issues.empty()) {
-        for (const ConfigIssue& issue : issues) {
-            std::cerr << "error: fitted " << issue.message() << '\n';
+    bool usable = usable_fit(fit, "ir_curve");
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        if (const auto& own = sensor_fits[static_cast<std::size_t>(sensor)]) {
+            usable = usable_fit(*own, ir_sensor_curve_name(sensor)) && usable;
         }
-        std::cerr << "The fitted curve is not usable; the profile was not changed.\n";
+    }
+    if (!usable) {
         return kExitBadInput;
     }
     profile.ir_curve = fit.curve;
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        const auto& own = sensor_fits[static_cast<std::size_t>(sensor)];
+        // A file without the sensor column fits one curve for both: it replaces any own one.
+        profile.ir_sensor_parameters[static_cast<std::size_t>(sensor)] =
+            own ? std::optional(curve_parameters(own->curve)) : std::nullopt;
+    }
     return write_profile(options.profile, profile);
 }
 

@@ -12,20 +12,19 @@ namespace legofeup::cli {
 
 namespace {
 
-// Front sensor's points first, then the rear's (measure_simulated_ir_points' order).
+// Front sensor's points first, then the rear's (measure_simulated_ir_points' order), each
+// line naming its sensor, so that calibrate-ir fits each sensor's own curve.
 void write_points(std::ostream& out, const std::vector<lessons::IrCalibrationPoint>& points,
-                  std::size_t per_sensor, const std::string& title, std::uint64_t seed,
-                  sim::IrSensorModel model, int readings) {
+                  const std::string& title, std::uint64_t seed, sim::IrSensorModel model,
+                  int readings) {
     out << "# IR calibration points taken on the simulated robot of " << title << ", seed " << seed
         << " (IR model " << sim::to_string(model) << "), each the mean of " << readings
         << " readings\n";
-    out << "adc,distance_m\n";
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        if (i % per_sensor == 0) {
-            out << (i == 0 ? "# front sensor\n" : "# rear sensor\n");
-        }
+    out << "adc,distance_m,sensor\n";
+    for (const lessons::IrCalibrationPoint& point : points) {
         char line[64];
-        std::snprintf(line, sizeof line, "%.2f,%.2f\n", points[i].adc, points[i].distance);
+        std::snprintf(line, sizeof line, "%.2f,%.2f,%s\n", point.adc, point.distance,
+                      point.sensor == kFrontSensor ? "front" : "rear");
         out << line;
     }
 }
@@ -42,7 +41,7 @@ void add_measure_ir_subcommand(CLI::App& app, MeasureIrOptions& options) {
         "Take IR calibration points on the simulated robot (a target at 4-30 cm) for "
         "calibrate-ir");
     add_config_options(*command, options);
-    command->add_option("--out,-o", options.out_file, "CSV file to write (adc,distance_m)")
+    command->add_option("--out,-o", options.out_file, "CSV file to write (adc,distance_m,sensor)")
         ->required();
     command->add_option("--readings", options.readings, "Readings averaged at each distance")
         ->check(CLI::Range(1, 1000));
@@ -64,8 +63,7 @@ int measure_ir_command(const MeasureIrOptions& options) {
         lessons::measure_simulated_ir_points(run.robot, seed, distances, options.readings);
     try {
         AtomicFile file(options.out_file);
-        write_points(file.stream(), points, distances.size(), title, seed, run.robot.ir_model,
-                     options.readings);
+        write_points(file.stream(), points, title, seed, run.robot.ir_model, options.readings);
         file.commit();
     } catch (const std::exception& error) {
         std::cerr << "error: " << error.what() << '\n';

@@ -239,12 +239,12 @@ StepStatus LegoFeupLoop::predict_pose(PoseFilter& filter, const OdometryIncremen
 
 void LegoFeupLoop::read_ir(const SensorFrame& frame) {
     LoopSnapshot& s = snapshot_;
-    for (int i = 0; i < kIrSensorCount; ++i) {
-        const auto index = static_cast<std::size_t>(i);
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        const auto index = static_cast<std::size_t>(sensor);
         IrSample& sample = s.ir[index];
         sample.adc = frame.ir_adc[index];
-        sample.reading = frame.ir_valid[index]
-                             ? distance_from_adc(sample.adc, config_.ir_curve)  // eq. 2
+        sample.reading = frame.ir_valid[index]  // eq. 2, with this sensor's own curve
+                             ? distance_from_adc(sample.adc, ir_sensor_curve(config_, sensor))
                              : IrDistance{0.0, IrStatus::Unavailable};
     }
     s.observation_available =

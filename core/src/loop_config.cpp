@@ -195,6 +195,15 @@ std::vector<ConfigIssue> validate(const IrMount& mount, const std::string& prefi
     return issues;
 }
 
+SharpIrCurve ir_sensor_curve(const LoopConfig& config, IrSensor sensor) {
+    const auto& own = config.ir_sensor_parameters[static_cast<std::size_t>(sensor)];
+    return own ? with_curve_parameters(config.ir_curve, *own) : config.ir_curve;
+}
+
+std::string ir_sensor_curve_name(IrSensor sensor) {
+    return sensor == kFrontSensor ? "ir_curve.front" : "ir_curve.rear";
+}
+
 std::vector<ConfigIssue> validate(const LoopConfig& config) {
     std::vector<ConfigIssue> issues;
     ConfigChecker check(issues);
@@ -204,7 +213,16 @@ std::vector<ConfigIssue> validate(const LoopConfig& config) {
     check.positive("odometry.wheel_base", config.odometry.wheel_base, 10.0);
 
     check_ir_mount(check, config.ir_mount, "ir_mount");
+    const std::size_t issues_before_curve = issues.size();
     check_ir_curve(check, config.ir_curve, "ir_curve");
+    // A sensor's own curve is checked as a whole once the shared one passes (its range
+    // problems are the shared curve's, reported once, under its name).
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        if (config.ir_sensor_parameters[static_cast<std::size_t>(sensor)]
+            && issues.size() == issues_before_curve) {
+            check_ir_curve(check, ir_sensor_curve(config, sensor), ir_sensor_curve_name(sensor));
+        }
+    }
 
     for (int i = 0; i < config.walls.size(); ++i) {
         const Wall& wall = config.walls.wall(i);

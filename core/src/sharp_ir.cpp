@@ -20,6 +20,18 @@ const char* to_string(IrStatus status) {
     return "unknown";
 }
 
+IrCurveParameters curve_parameters(const SharpIrCurve& curve) {
+    return {curve.a, curve.c_m, curve.c_r, curve.b};
+}
+
+SharpIrCurve with_curve_parameters(SharpIrCurve curve, const IrCurveParameters& parameters) {
+    curve.a = parameters.a;
+    curve.c_m = parameters.c_m;
+    curve.c_r = parameters.c_r;
+    curve.b = parameters.b;
+    return curve;
+}
+
 IrDistance distance_from_adc(double adc, const SharpIrCurve& curve) {
     const double denominator = adc + curve.c_r;  // A + C_R
     if (!(denominator > 0.0)) {

@@ -99,20 +99,57 @@ Setting file(std::string key, std::string field, std::string help, std::string R
     return s;
 }
 
+// A real value that is only set when written (another value applies unless it is): `access`
+// is a generic lambda returning the std::optional<double> member, `applies` gives the value
+// that applies while it is unset (stored units).
+template <class Access, class Applies>
+Setting optional_real(std::string key, std::string field, std::string help, Access access,
+                      Applies applies, double scale = 1.0) {
+    Setting s{
+        std::move(key), std::move(field), std::move(help), SettingType::Real, {}, {}, {}, {}, {}};
+    s.get = [access, applies, scale](const RunConfig& c) -> SettingValue {
+        return access(c).value_or(applies(c)) / scale;
+    };
+    s.set = [access, scale](RunConfig& c, const SettingValue& v) {
+        access(c) = std::get<double>(v) * scale;
+    };
+    s.is_set = [access](const RunConfig& c) { return access(c).has_value(); };
+    return s;
+}
+
 // One part of a pose override (the world's start pose unless set).
 Setting pose_part(std::string key, std::string field, std::string help,
                   PoseOverride RunConfig::*pose, std::optional<double> PoseOverride::*part,
                   double scale = 1.0) {
-    Setting s{
-        std::move(key), std::move(field), std::move(help), SettingType::Real, {}, {}, {}, {}, {}};
-    s.get = [pose, part, scale](const RunConfig& c) -> SettingValue {
-        return (c.*pose.*part).value_or(0.0) / scale;
-    };
-    s.set = [pose, part, scale](RunConfig& c, const SettingValue& v) {
-        c.*pose.*part = std::get<double>(v) * scale;
-    };
-    s.is_set = [pose, part](const RunConfig& c) { return (c.*pose.*part).has_value(); };
-    return s;
+    return optional_real(
+        std::move(key), std::move(field), std::move(help),
+        [ pose, part ](auto& c) -> auto& { return c.*pose.*part; },
+        [](const RunConfig&) { return 0.0; }, scale);
+}
+
+// One sensor's own eq. 2 parameters: `ir_curve.front_c_m` (field ir_curve.front.c_m, as
+// validate() names the sensor's curve) overrides the shared `ir_curve.c_m` for that sensor.
+void add_sensor_curve_settings(std::vector<Setting>& s, IrSensor sensor) {
+    const auto index = static_cast<std::size_t>(sensor);
+    const std::string name = sensor == kFrontSensor ? "front" : "rear";
+    const std::string field = ir_sensor_curve_name(sensor) + ".";
+    const std::string unit = "the " + name + " sensor's own ";
+    s.push_back(optional_real(
+        "ir_curve." + name + "_a", field + "a", unit + "a, m per fit unit; unset: ir_curve.a",
+        [index](auto& c) -> auto& { return c.ir_sensor_curves[index].a; },
+        [](const RunConfig& c) { return c.ir_curve.a; }));
+    s.push_back(optional_real(
+        "ir_curve." + name + "_c_m", field + "c_m", unit + "C_M; unset: ir_curve.c_m",
+        [index](auto& c) -> auto& { return c.ir_sensor_curves[index].c_m; },
+        [](const RunConfig& c) { return c.ir_curve.c_m; }));
+    s.push_back(optional_real(
+        "ir_curve." + name + "_c_r", field + "c_r", unit + "C_R; unset: ir_curve.c_r",
+        [index](auto& c) -> auto& { return c.ir_sensor_curves[index].c_r; },
+        [](const RunConfig& c) { return c.ir_curve.c_r; }));
+    s.push_back(optional_real(
+        "ir_curve." + name + "_b", field + "b", unit + "b, fit units; unset: ir_curve.b",
+        [index](auto& c) -> auto& { return c.ir_sensor_curves[index].b; },
+        [](const RunConfig& c) { return c.ir_curve.b; }));
 }
 
 // A Choice bound to an enum member: `values` named by to_string, read back with `parse`
@@ -804,6 +841,9 @@ std::vector<Setting> make_settings() {
         "ir_curve.contact_adc", "ir_curve.contact_adc",
         "A/D value with the target touching the sensor",
         [](auto& c) -> auto& { return c.ir_curve.contact_adc; }));
+    // Each sensor's own curve (calibrated per unit); unset parameters are the shared ones.
+    add_sensor_curve_settings(s, kFrontSensor);
+    add_sensor_curve_settings(s, kRearSensor);
 
     // [association] — Fig. 4.
     s.push_back(real(

@@ -15,6 +15,7 @@
 #include "legofeup/core/angles.hpp"
 #include "legofeup/core/config_issue.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/run_config.hpp"
 #include "text_file.hpp"
 #include "toml_values.hpp"
 
@@ -106,6 +107,36 @@ const std::vector<ProfileField>& profile_fields() {
     return fields;
 }
 
+// A sensor's own curve is written in [ir_curve] as `front_c_m`, `rear_b`, …: one key per
+// sensor and eq. 2 parameter; the parameters a file leaves out are the shared curve's.
+struct CurveParameter {
+    std::string_view name;
+    std::optional<double> IrCurveOverride::*written;
+    double IrCurveParameters::*value;
+    std::string_view help;
+};
+constexpr CurveParameter kCurveParameters[] = {
+    {"a", &IrCurveOverride::a, &IrCurveParameters::a, "a, metres per fit unit"},
+    {"c_m", &IrCurveOverride::c_m, &IrCurveParameters::c_m, "C_M"},
+    {"c_r", &IrCurveOverride::c_r, &IrCurveParameters::c_r, "C_R, A/D counts"},
+    {"b", &IrCurveOverride::b, &IrCurveParameters::b, "b, fit units"},
+};
+
+std::string sensor_name(IrSensor sensor) {
+    return sensor == kFrontSensor ? "front" : "rear";
+}
+
+// "ir_curve.front_c_m": the key of one sensor's parameter as written in the file.
+std::string sensor_curve_key(IrSensor sensor, const CurveParameter& parameter) {
+    return std::string(kCurveSection) + "." + sensor_name(sensor) + "_"
+           + std::string(parameter.name);
+}
+
+// "ir_curve.front.c_m": the same parameter as validate() names it.
+std::string sensor_curve_field(IrSensor sensor, const CurveParameter& parameter) {
+    return ir_sensor_curve_name(sensor) + "." + std::string(parameter.name);
+}
+
 const ProfileField* find_field(std::string_view key) {
     const auto& fields = profile_fields();
     const auto found = std::find_if(fields.begin(), fields.end(),
@@ -117,6 +148,11 @@ std::vector<std::string> all_keys() {
     std::vector<std::string> keys;
     for (const ProfileField& field : profile_fields()) {
         keys.emplace_back(field.key);
+    }
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        for (const CurveParameter& parameter : kCurveParameters) {
+            keys.push_back(sensor_curve_key(sensor, parameter));
+        }
     }
     return keys;
 }
@@ -181,6 +217,14 @@ std::vector<ConfigIssue> profile_issues(const RobotProfile& p) {
     }
     const auto curve = validate(p.ir_curve, std::string(kCurveSection));
     issues.insert(issues.end(), curve.begin(), curve.end());
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        const auto& own = p.ir_sensor_parameters[static_cast<std::size_t>(sensor)];
+        if (own && curve.empty()) {
+            const auto sensor_curve =
+                validate(with_curve_parameters(p.ir_curve, *own), ir_sensor_curve_name(sensor));
+            issues.insert(issues.end(), sensor_curve.begin(), sensor_curve.end());
+        }
+    }
     return issues;
 }
 
@@ -202,6 +246,13 @@ class ProfileReader {
                         "unknown section (the only section is [ir_curve])");
             } else {
                 read_field(name, node, profile);
+            }
+        }
+        for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+            const IrCurveOverride& own = sensor_curves_[static_cast<std::size_t>(sensor)];
+            if (!own.empty()) {
+                profile.ir_sensor_parameters[static_cast<std::size_t>(sensor)] =
+                    own.applied_to(profile.ir_curve);
             }
         }
         if (!lines_.contains("codo_right")) {
@@ -228,6 +279,9 @@ class ProfileReader {
   private:
     void read_field(const std::string& key, const toml::node& node, RobotProfile& profile) {
         const int line = line_of(node);
+        if (read_sensor_curve(key, node)) {
+            return;
+        }
         const ProfileField* field = find_field(key);
         if (field == nullptr) {
             const std::string match = closest_match(key, all_keys());
@@ -264,14 +318,37 @@ class ProfileReader {
         }
     }
 
+    // A sensor's own curve parameter (`ir_curve.front_c_m`): true if `key` is one.
+    bool read_sensor_curve(const std::string& key, const toml::node& node) {
+        for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+            for (const CurveParameter& parameter : kCurveParameters) {
+                if (key != sensor_curve_key(sensor, parameter)) {
+                    continue;
+                }
+                // Issues name the sensor's curve as validate() does: point them here.
+                const std::string field = sensor_curve_field(sensor, parameter);
+                lines_[field] = line_of(node);
+                texts_[field] = node_text(node);
+                if (const auto number = number_of(node)) {
+                    sensor_curves_[static_cast<std::size_t>(sensor)].*parameter.written = *number;
+                } else {
+                    problem(line_of(node), key, node_text(node), "must be a number");
+                }
+                return true;
+            }
+        }
+        return false;
+    }
+
     void problem(int line, std::string key, std::string value, std::string reason) {
         problems_.push_back({source_, line, std::move(key), std::move(value), std::move(reason)});
     }
 
     std::string source_;
     std::vector<InputProblem> problems_;
-    std::map<std::string, int> lines_;          // key → line it was set on
-    std::map<std::string, std::string> texts_;  // key → value as written
+    std::map<std::string, int> lines_;                           // key → line it was set on
+    std::map<std::string, std::string> texts_;                   // key → value as written
+    std::array<IrCurveOverride, kIrSensorCount> sensor_curves_;  // as written, until read
 };
 
 std::string toml_number(double value) {
@@ -369,6 +446,19 @@ std::string robot_profile_to_toml(const RobotProfile& profile) {
             (name == "codo_right" && derived_right) || (name == "codo_left" && derived_left);
         out << (derived ? "# " : "") << name << " = " << value << "  # " << field.help << "\n";
     }
+    // Still in [ir_curve], its last section: each sensor's own curve, where it has one.
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        const auto& own = profile.ir_sensor_parameters[static_cast<std::size_t>(sensor)];
+        if (!own) {
+            continue;
+        }
+        out << "# The " << sensor_name(sensor) << " sensor's own curve (calibrate-ir fits each "
+            << "sensor); its trusted range is the one above\n";
+        for (const CurveParameter& parameter : kCurveParameters) {
+            out << sensor_name(sensor) << "_" << parameter.name << " = "
+                << toml_number((*own).*parameter.value) << "  # " << parameter.help << "\n";
+        }
+    }
     return out.str();
 }
 
@@ -406,6 +496,7 @@ void apply_robot_profile(const RobotProfile& profile, LoopConfig& config) {
     config.odometry.codo_left = profile.codo_left;
     config.odometry.wheel_base = profile.wheel_base;
     config.ir_curve = profile.ir_curve;
+    config.ir_sensor_parameters = profile.ir_sensor_parameters;
 }
 
 }  // namespace legofeup::lessons

@@ -167,6 +167,13 @@ ResolvedRun resolve(const RunConfig& config) {
     loop.odometry.wheel_base = config.robot.wheel_base;
     loop.ir_mount = config.robot.ir_mount;
     loop.ir_curve = config.ir_curve;
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        const auto index = static_cast<std::size_t>(sensor);
+        if (!config.ir_sensor_curves[index].empty()) {
+            loop.ir_sensor_parameters[index] =
+                config.ir_sensor_curves[index].applied_to(config.ir_curve);
+        }
+    }
     loop.walls = WallMap(run.world.walls);
     loop.association = config.association;
     loop.filter = config.filter;

@@ -177,7 +177,7 @@ int data_rows(const std::string& csv) {
     while (start < csv.size()) {
         const std::size_t end = csv.find('\n', start);
         const std::string line = csv.substr(start, end - start);
-        rows += !line.empty() && line[0] != '#' && line != "adc,distance_m" ? 1 : 0;
+        rows += !line.empty() && line[0] != '#' && !line.starts_with("adc,distance_m") ? 1 : 0;
         start = end == std::string::npos ? csv.size() : end + 1;
     }
     return rows;
@@ -194,19 +194,36 @@ TEST_F(CalibrateCli, MeasureIrWritesPointsThatCalibrateIrFits) {
         << measured.out;
     const std::string csv = read_file(points);
     EXPECT_NE(csv.find("seed 2005 (IR model realistic)"), std::string::npos) << csv;
-    EXPECT_NE(csv.find("\nadc,distance_m\n# front sensor\n"), std::string::npos) << csv;
-    EXPECT_NE(csv.find("# rear sensor\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nadc,distance_m,sensor\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find(",0.04,front\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find(",0.30,rear\n"), std::string::npos) << csv;
     EXPECT_EQ(data_rows(csv), 34);
-    EXPECT_NE(csv.find(",0.04\n"), std::string::npos);
-    EXPECT_NE(csv.find(",0.30\n"), std::string::npos);
 
     const fs::path profile = dir_ / "robot.toml";
     const Result fitted =
         run("calibrate-ir --points " + points.string() + " --profile " + profile.string());
     ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
     EXPECT_NE(fitted.out.find("IR curve fitted to 34 measurements"), std::string::npos);
-    // This robot's sensors are not the nominal curve (C_M = 2914, C_R = 5).
-    EXPECT_GT(std::abs(toml_value(read_file(profile), "c_r") - 5.0), 1.0);
+    // This robot's sensors are not the nominal curve (C_M = 2914, C_R = 5), nor each other.
+    const std::string written = read_file(profile);
+    EXPECT_GT(std::abs(toml_value(written, "c_r") - 5.0), 1.0);
+    EXPECT_NE(fitted.out.find("17 measurements from " + points.string() + " (front sensor's"),
+              std::string::npos)
+        << fitted.out;
+    EXPECT_GT(std::abs(toml_value(written, "front_c_m") - toml_value(written, "rear_c_m")), 50.0);
+
+    // The same points without the sensor column: one curve, and no sensor's own any more.
+    std::string plain = csv;
+    for (const std::string column : {",sensor\n", ",front\n", ",rear\n"}) {
+        for (auto at = plain.find(column); at != std::string::npos; at = plain.find(column)) {
+            plain.replace(at, column.size(), "\n");
+        }
+    }
+    const std::string one = write("one.csv", plain);
+    const Result refitted = run("calibrate-ir --points " + one + " --profile " + profile.string());
+    ASSERT_EQ(refitted.exit_code, 0) << refitted.err;
+    EXPECT_EQ(read_file(profile).find("front_c_m"), std::string::npos);
+    EXPECT_NEAR(toml_value(read_file(profile), "c_m"), toml_value(written, "c_m"), 1e-3);
 }
 
 TEST_F(CalibrateCli, MeasureIrRefusesABadConfigurationAndReadings) {

@@ -7,6 +7,7 @@
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/config_schema.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/run_config.hpp"
 
 namespace legofeup::lessons {
 namespace {
@@ -100,6 +101,29 @@ zoom = 2
     // Nothing was applied: the configuration is as it was.
     EXPECT_EQ(config.seed, before.seed);
     EXPECT_EQ(config.filter.q11, before.filter.q11);
+}
+
+TEST(ConfigFile, EachSensorsOwnCurveOverridesTheSharedOneInAnyOrder) {
+    RunConfig config;
+    apply_config_toml("[ir_curve]\nrear_c_m = 2990.5\nc_m = 2900.0\nfront_b = 0.5\n", "c.toml",
+                      config);
+    const ResolvedRun run = resolve(config);
+    EXPECT_EQ(ir_sensor_curve(run.loop, kFrontSensor).c_m, 2900.0);
+    EXPECT_EQ(ir_sensor_curve(run.loop, kFrontSensor).b, 0.5);
+    EXPECT_EQ(ir_sensor_curve(run.loop, kRearSensor).c_m, 2990.5);
+    EXPECT_EQ(ir_sensor_curve(run.loop, kRearSensor).b, 1.0);
+    // Without them both sensors read with the shared curve, and the loop has no own one.
+    const ResolvedRun plain = resolve(RunConfig{});
+    EXPECT_FALSE(plain.loop.ir_sensor_parameters[kFrontSensor].has_value());
+    EXPECT_FALSE(plain.loop.ir_sensor_parameters[kRearSensor].has_value());
+
+    RunConfig bad;
+    apply_config_toml("seed = 3\n[ir_curve]\nrear_c_m = -1\n", "bad.toml", bad);
+    const auto problems = problem_messages_of([&] { resolve(bad); });
+    ASSERT_FALSE(problems.empty());
+    EXPECT_EQ(problems[0].rfind("bad.toml:3: ir_curve.rear_c_m = -1: must be greater than 0", 0),
+              0u)
+        << problems[0];
 }
 
 TEST(ConfigFile, SyntaxErrorsPointAtTheirLine) {

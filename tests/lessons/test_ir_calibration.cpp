@@ -265,10 +265,34 @@ TEST_F(IrPointsCsv, RefusesBadLinesWithPathLineFieldAndValue) {
                            + path + ":7: distance_m = 12cm: must be a positive number of metres");
 }
 
+TEST_F(IrPointsCsv, ReadsWhichSensorTookEachPointAndRefusesAnUnknownSensor) {
+    const std::string path = write("sensors.csv",
+                                   "adc,distance_m,sensor\n580,0.04,front\n"
+                                   "570,0.04,rear\n300,0.1,front\n");
+    const std::vector<IrCalibrationPoint> points = read_ir_points_csv(path);
+    ASSERT_EQ(points.size(), 3u);
+    EXPECT_EQ(points[0].sensor, legofeup::kFrontSensor);
+    EXPECT_EQ(points[1].sensor, legofeup::kRearSensor);
+    const auto front = legofeup::lessons::points_of(points, legofeup::kFrontSensor);
+    ASSERT_EQ(front.size(), 2u);
+    EXPECT_EQ(front[1].adc, 300.0);
+    EXPECT_EQ(legofeup::lessons::points_of(points, legofeup::kRearSensor).size(), 1u);
+    // Without the column no point says its sensor: none is any one sensor's.
+    const std::string plain = write("plain.csv", "adc,distance_m\n580,0.04\n");
+    EXPECT_FALSE(read_ir_points_csv(plain)[0].sensor.has_value());
+    const std::string bad = write("bad.csv",
+                                  "adc,distance_m,sensor\n580,0.04,left\n"
+                                  "570,0.04\n");
+    EXPECT_EQ(input_error_of([&] { read_ir_points_csv(bad); }),
+              bad + ":2: sensor = left: must be front or rear\n" + bad
+                  + ":3: row = 570,0.04: expected 3 values (adc,distance_m,sensor), found 2");
+}
+
 TEST_F(IrPointsCsv, RefusesAMissingHeaderAnEmptyFileAndAMissingFile) {
     const std::string headless = write("headless.csv", "# measured today\n590,0.04\n");
     EXPECT_EQ(input_error_of([&] { read_ir_points_csv(headless); }),
-              headless + ":2: header = 590,0.04: the first line must be: adc,distance_m");
+              headless + ":2: header = 590,0.04: the first line must be: adc,distance_m (or "
+                             "adc,distance_m,sensor)");
     const std::string empty = write("empty.csv", "# nothing yet\n\n");
     EXPECT_NE(
         input_error_of([&] { read_ir_points_csv(empty); }).find(empty + ": the file is empty"),

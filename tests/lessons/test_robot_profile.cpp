@@ -46,6 +46,7 @@ void expect_same_profile(const RobotProfile& a, const RobotProfile& b) {
     EXPECT_EQ(a.codo_right, b.codo_right);
     EXPECT_EQ(a.codo_left, b.codo_left);
     expect_same_curve(a.ir_curve, b.ir_curve);
+    EXPECT_EQ(a.ir_sensor_parameters, b.ir_sensor_parameters);
     EXPECT_EQ(a.power_per_meter_per_second, b.power_per_meter_per_second);
     EXPECT_EQ(a.right_motor_port, b.right_motor_port);
     EXPECT_EQ(a.left_motor_port, b.left_motor_port);
@@ -74,6 +75,8 @@ RobotProfile unusual_profile() {
     p.ir_curve.peak_distance = 0.045;
     p.ir_curve.contact_adc = 180.0;
     p.ir_curve.adc_max = 4095;
+    p.ir_sensor_parameters[legofeup::kRearSensor] = legofeup::IrCurveParameters{
+        0.001, 29500.25, -7.125, 9.75};  // the front sensor keeps the shared curve
     p.power_per_meter_per_second = 212.125;
     p.right_motor_port = 0;
     p.left_motor_port = 2;
@@ -154,6 +157,43 @@ TEST_F(RobotProfileFile, DerivesCodoFromTheDiametersUnlessTheFileSetsIt) {
     legofeup::lessons::derive_codo(changed);
     EXPECT_DOUBLE_EQ(changed.codo_right, codo(0.05));
     EXPECT_DOUBLE_EQ(changed.codo_left, codo(0.0432));
+}
+
+TEST_F(RobotProfileFile, ReadsEachSensorsOwnCurveAndOldProfilesAsOneCurve) {
+    std::string path = write("sensors.toml",
+                             "[ir_curve]\nc_m = 2900.0\nrear_c_m = 2990.5\n"
+                             "rear_b = 0.75\n");
+    const RobotProfile profile = load_robot_profile(path);
+    EXPECT_FALSE(profile.ir_sensor_parameters[legofeup::kFrontSensor].has_value());
+    // The parameters the file leaves out are the shared curve's.
+    const legofeup::IrCurveParameters rear{0.01, 2990.5, 5.0, 0.75};
+    EXPECT_EQ(profile.ir_sensor_parameters[legofeup::kRearSensor], rear);
+    LoopConfig loop;
+    apply_robot_profile(profile, loop);
+    EXPECT_EQ(legofeup::ir_sensor_curve(loop, legofeup::kFrontSensor).c_m, 2900.0);
+    EXPECT_EQ(legofeup::ir_sensor_curve(loop, legofeup::kRearSensor).c_m, 2990.5);
+    EXPECT_EQ(legofeup::ir_sensor_curve(loop, legofeup::kRearSensor).max_range, 0.30);
+
+    // A profile of one curve (every profile before there were two) reads both with it,
+    // and applying it removes a sensor's own curve from the loop.
+    path = write("sensors.toml", "[ir_curve]\nc_m = 2900.0\n");
+    apply_robot_profile(load_robot_profile(path), loop);
+    EXPECT_EQ(legofeup::ir_sensor_curve(loop, legofeup::kRearSensor).c_m, 2900.0);
+
+    path = write("sensors.toml",
+                 "[ir_curve]\nfront_c_m = -5\nrear_b = \"x\"\n"
+                 "rear_cm = 1\n");
+    EXPECT_EQ(input_error_of([&] { load_robot_profile(path); }),
+              path + ":3: ir_curve.rear_b = \"x\": must be a number\n" + path
+                  + ":4: ir_curve.rear_cm: unknown setting (did you mean 'ir_curve.rear_c_m'?)");
+    path = write("sensors.toml", "[ir_curve]\nfront_c_m = -5\n");
+    // Named as validate() names the sensor's curve, at the line that set it.
+    EXPECT_EQ(input_error_of([&] { load_robot_profile(path); })
+                  .rfind(path
+                             + ":2: ir_curve.front.c_m = -5: must be greater than 0 and at "
+                               "most 1e+07\n",
+                         0),
+              0u);
 }
 
 TEST_F(RobotProfileFile, RefusesEveryBadSettingWithPathLineFieldValueAndReason) {

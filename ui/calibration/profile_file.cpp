@@ -36,6 +36,8 @@ void apply_ir_fit(lessons::RobotProfile& profile, const SharpIrCurve& fitted) {
     profile.ir_curve.c_m = fitted.c_m;
     profile.ir_curve.c_r = fitted.c_r;
     profile.ir_curve.b = fitted.b;
+    // The dialog fits one curve for both sensors: it replaces their own curves, if any.
+    profile.ir_sensor_parameters = {};
 }
 
 void apply_umbmark(lessons::RobotProfile& profile, const lessons::UmbmarkResult& result) {

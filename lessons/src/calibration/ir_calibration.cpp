@@ -3,6 +3,7 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <set>
 
 #include "../text_file.hpp"
@@ -228,6 +229,14 @@ IrFit fit_ir_curve(std::span<const IrCalibrationPoint> points, const SharpIrCurv
     return fit;
 }
 
+std::vector<IrCalibrationPoint> points_of(std::span<const IrCalibrationPoint> points,
+                                          IrSensor sensor) {
+    std::vector<IrCalibrationPoint> taken;
+    std::copy_if(points.begin(), points.end(), std::back_inserter(taken),
+                 [sensor](const IrCalibrationPoint& point) { return point.sensor == sensor; });
+    return taken;
+}
+
 std::vector<IrCalibrationPoint> read_ir_points_csv(const std::string& path) {
     return parse_ir_points_csv(read_text_file(path, kMeasurementsFile), path);
 }
@@ -241,7 +250,8 @@ std::vector<IrCalibrationPoint> parse_ir_points_csv(std::string_view text,
         problems.push_back({source, line, std::move(key), std::string(value), std::move(reason)});
     };
     bool header_seen = false;
-    std::size_t next = 0;  // where the next line starts
+    bool with_sensor = false;  // the header has the sensor column
+    std::size_t next = 0;      // where the next line starts
     for (int line = 1; next < text.size(); ++line) {
         const std::size_t end = std::min(text.find('\n', next), text.size());
         const std::string_view row = text.substr(next, end - next);
@@ -253,16 +263,31 @@ std::vector<IrCalibrationPoint> parse_ir_points_csv(std::string_view text,
         const std::vector<std::string_view> fields = split_fields(content, ',');
         if (!header_seen) {
             header_seen = true;
-            if (fields.size() != 2 || fields[0] != "adc" || fields[1] != "distance_m") {
-                problem(line, "header", content, "the first line must be: adc,distance_m");
+            with_sensor = fields.size() == 3 && fields[2] == "sensor";
+            if ((fields.size() != 2 && !with_sensor) || fields[0] != "adc"
+                || fields[1] != "distance_m") {
+                problem(line, "header", content,
+                        "the first line must be: adc,distance_m (or adc,distance_m,sensor)");
                 break;
             }
             continue;
         }
-        if (fields.size() != 2) {
+        const std::size_t columns = with_sensor ? 3 : 2;
+        if (fields.size() != columns) {
             problem(line, "row", content,
-                    "expected 2 values (adc,distance_m), found " + std::to_string(fields.size()));
+                    "expected " + std::to_string(columns) + " values ("
+                        + (with_sensor ? "adc,distance_m,sensor" : "adc,distance_m") + "), found "
+                        + std::to_string(fields.size()));
             continue;
+        }
+        std::optional<IrSensor> sensor;
+        if (with_sensor) {
+            if (fields[2] == "front" || fields[2] == "rear") {
+                sensor = fields[2] == "front" ? kFrontSensor : kRearSensor;
+            } else {
+                problem(line, "sensor", fields[2], "must be front or rear");
+                continue;
+            }
         }
         const auto adc = parse_number(fields[0]);
         const auto distance = parse_number(fields[1]);
@@ -273,7 +298,7 @@ std::vector<IrCalibrationPoint> parse_ir_points_csv(std::string_view text,
             problem(line, "distance_m", fields[1], "must be a positive number of metres");
         }
         if (adc && distance) {
-            points.push_back({*adc, *distance});
+            points.push_back({*adc, *distance, sensor});
         }
     }
     if (!header_seen) {

@@ -60,8 +60,8 @@ std::vector<IrCalibrationPoint> measure_simulated_ir_points(const sim::RobotSpec
             sum[0] += frame.ir_adc[0];
             sum[1] += frame.ir_adc[1];
         }
-        front.push_back({sum[0] / readings, distance});
-        rear.push_back({sum[1] / readings, distance});
+        front.push_back({sum[0] / readings, distance, kFrontSensor});
+        rear.push_back({sum[1] / readings, distance, kRearSensor});
     }
     front.insert(front.end(), rear.begin(), rear.end());
     return front;

@@ -3,7 +3,9 @@
 // (docs/loop.md), and their validation. Files (TOML), the GUI and the CLI all fill this
 // one structure; validate() is the single place that decides what is acceptable.
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,7 +48,11 @@ struct InitialBelief {
 struct LoopConfig {
     OdometryParams odometry;
     IrMount ir_mount;
+    /// Eq. 2 of both IR sensors (the paper's one curve) and their trusted range.
     SharpIrCurve ir_curve;
+    /// A sensor's own eq. 2 parameters ([kFrontSensor], [kRearSensor]), as calibrating each
+    /// unit finds them; empty: ir_curve's. The trusted range is ir_curve's for both.
+    std::array<std::optional<IrCurveParameters>, kIrSensorCount> ir_sensor_parameters;
     WallMap walls = standard_arena_walls(ArenaSpec{});
     AssociationParams association;
     FilterTuning filter;
@@ -67,6 +73,12 @@ struct LoopConfig {
     /// counter reset on the robot); that period's odometry is skipped and flagged.
     double max_wheel_travel_per_step = 0.25;
 };
+
+/// The curve the loop reads `sensor` with: ir_curve with that sensor's own parameters, if any.
+SharpIrCurve ir_sensor_curve(const LoopConfig& config, IrSensor sensor);
+
+/// The name of a sensor's own curve in settings and messages: "ir_curve.front", "ir_curve.rear".
+std::string ir_sensor_curve_name(IrSensor sensor);
 
 /// Everything wrong with `config` (empty when it is usable).
 std::vector<ConfigIssue> validate(const LoopConfig& config);

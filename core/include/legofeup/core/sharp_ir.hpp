@@ -26,6 +26,22 @@ struct SharpIrCurve {
     int adc_max = 1023;           ///< full scale of the A/D converter
 };
 
+/// Eq. 2's four parameters: what differs between two units of the sensor and what a
+/// calibration fits. The trusted range, the fold-back and the A/D scale stay the curve's.
+struct IrCurveParameters {
+    double a = 0.01;
+    double c_m = 2914.0;
+    double c_r = 5.0;
+    double b = 1.0;
+
+    bool operator==(const IrCurveParameters&) const = default;
+};
+
+/// The eq. 2 parameters of `curve`.
+IrCurveParameters curve_parameters(const SharpIrCurve& curve);
+/// `curve` with its eq. 2 parameters replaced by `parameters`.
+SharpIrCurve with_curve_parameters(SharpIrCurve curve, const IrCurveParameters& parameters);
+
 enum class IrStatus : std::uint8_t {
     InRange,      ///< min_range ≤ D ≤ max_range: usable for an observation
     TooFar,       ///< D > max_range, or no finite distance (A + C_R ≤ 0)

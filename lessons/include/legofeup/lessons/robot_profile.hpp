@@ -10,6 +10,8 @@
 // derivation (e.g. Codo measured directly by driving a known distance). save_robot_profile
 // writes a Codo only when it is such an override.
 
+#include <array>
+#include <optional>
 #include <string>
 
 #include "legofeup/core/loop_config.hpp"
@@ -31,7 +33,10 @@ struct RobotProfile {
     /// Codo1, Codo2 in counts per metre; the derived values unless the file overrides them.
     double codo_right = nominal_counts_per_metre(0.0432, kNxtCountsPerTurn);
     double codo_left = nominal_counts_per_metre(0.0432, kNxtCountsPerTurn);
-    SharpIrCurve ir_curve;
+    SharpIrCurve ir_curve;  ///< both sensors' curve (eq. 2) and trusted range
+    /// A sensor's own eq. 2 parameters ([kFrontSensor], [kRearSensor]) where calibrate-ir
+    /// fitted each unit (`front_c_m`, … in [ir_curve]); empty: ir_curve's.
+    std::array<std::optional<IrCurveParameters>, kIrSensorCount> ir_sensor_parameters;
     double power_per_meter_per_second = 265.3;  ///< motor power per m/s of wheel speed
     int right_motor_port = 2;                   ///< output port: 0 = A, 1 = B, 2 = C
     int left_motor_port = 1;
@@ -69,7 +74,7 @@ std::string robot_profile_to_toml(const RobotProfile& profile);
 /// valid, std::runtime_error if the file cannot be written.
 void save_robot_profile(const std::string& path, const RobotProfile& profile);
 
-/// The robot's part of the loop: odometry (Codo, wheel base) and the IR curve. Nothing
+/// The robot's part of the loop: odometry (Codo, wheel base) and the IR curves. Nothing
 /// else in `config` changes.
 void apply_robot_profile(const RobotProfile& profile, LoopConfig& config);
 

@@ -3,6 +3,7 @@
 // TOML configuration file or an experiment preset sets — and its resolution into the values
 // the loop and the simulator take.
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -69,6 +70,21 @@ struct PoseOverride {
     }
 };
 
+/// A sensor's own eq. 2 parameters, each the shared [ir_curve]'s unless set
+/// (`ir_curve.front_c_m`, …): what calibrating each unit finds.
+struct IrCurveOverride {
+    std::optional<double> a;
+    std::optional<double> c_m;
+    std::optional<double> c_r;
+    std::optional<double> b;
+
+    bool empty() const { return !a && !c_m && !c_r && !b; }
+    IrCurveParameters applied_to(const SharpIrCurve& shared) const {
+        return {a.value_or(shared.a), c_m.value_or(shared.c_m), c_r.value_or(shared.c_r),
+                b.value_or(shared.b)};
+    }
+};
+
 /// Where a setting's value came from, to point at it in error messages.
 struct SettingOrigin {
     std::string source;  ///< file name, "experiment c", "--seed", …
@@ -96,7 +112,9 @@ struct RunConfig {
     ControllerGains gains;
     double max_wheel_speed = 0.38;
     RobotGeometry robot;
-    SharpIrCurve ir_curve;
+    SharpIrCurve ir_curve;  ///< both sensors' curve (the paper's one) and trusted range
+    /// [kFrontSensor], [kRearSensor]: where a sensor's own curve differs from ir_curve.
+    std::array<IrCurveOverride, kIrSensorCount> ir_sensor_curves;
     AssociationParams association;
 
     /// The simulated robot: its errors, noise, body and motors. Its geometry fields are

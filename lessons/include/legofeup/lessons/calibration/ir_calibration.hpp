@@ -5,11 +5,13 @@
 // when the fit is written in centimetres) and only rescales C_M and b. See docs/calibration.md.
 
 #include <Eigen/Core>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "legofeup/core/ir_geometry.hpp"
 #include "legofeup/core/sharp_ir.hpp"
 
 namespace legofeup::lessons {
@@ -18,7 +20,13 @@ namespace legofeup::lessons {
 struct IrCalibrationPoint {
     double adc = 0.0;       ///< A, the raw 10-bit A/D value (0 … adc_max)
     double distance = 0.0;  ///< D, metres from the sensor's front face to the target
+    /// Which sensor took it, when the file says (its `sensor` column: front or rear).
+    std::optional<IrSensor> sensor = std::nullopt;
 };
+
+/// The points `sensor` took (those whose sensor is said), in their order.
+std::vector<IrCalibrationPoint> points_of(std::span<const IrCalibrationPoint> points,
+                                          IrSensor sensor);
 
 struct IrFit {
     /// The start curve with C_M, C_R and b replaced by the fitted values.
@@ -45,8 +53,9 @@ Eigen::RowVector3d ir_curve_jacobian(double adc, const SharpIrCurve& curve);
 IrFit fit_ir_curve(std::span<const IrCalibrationPoint> points, const SharpIrCurve& start);
 
 /// Reads measurements from a CSV file: the header `adc,distance_m`, then one `A,D` pair a
-/// line (D in metres); blank lines and everything after `#` are ignored. Throws InputError
-/// with path:line, the column, the value and the reason for every bad line.
+/// line (D in metres), or the header `adc,distance_m,sensor` and `A,D,front` or `A,D,rear`
+/// (every line then says its sensor); blank lines and everything after `#` are ignored. Throws
+/// InputError with path:line, the column, the value and the reason for every bad line.
 std::vector<IrCalibrationPoint> read_ir_points_csv(const std::string& path);
 /// Parses measurements from text as read_ir_points_csv does; `source` names it in messages.
 std::vector<IrCalibrationPoint> parse_ir_points_csv(std::string_view text,

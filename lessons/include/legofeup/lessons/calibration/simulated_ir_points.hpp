@@ -20,8 +20,9 @@ std::vector<double> advised_ir_calibration_distances();
 /// For each distance (metres, from the sensors' front face): the robot of `robot`, run with
 /// `seed`, stands still facing a wall at that distance for `readings` control periods; each
 /// sensor gives one point (the mean of its A/D values, the distance). Front sensor's points
-/// first, then the rear's, each in the order of `distances`. Throws std::invalid_argument
-/// when `robot` does not validate, `readings` < 1 or a distance is not in (0, 0.8] m.
+/// first, then the rear's (each point says its sensor), each in the order of `distances`. Throws
+/// std::invalid_argument when `robot` does not validate, `readings` < 1 or a distance is not in (0,
+/// 0.8] m.
 std::vector<IrCalibrationPoint> measure_simulated_ir_points(const sim::RobotSpec& robot,
                                                             std::uint64_t seed,
                                                             std::span<const double> distances,
