@@ -111,6 +111,64 @@ def velocity_kf_position_rms(run):
     return _rms_to_truth(run, _integrate(run, lambda k: (v[k], w[k])))
 
 
+# How far the CLI's own integrated-position metrics may lie from this script's integration
+# of the trace's speeds (relative). The two integrate the same speeds with eq. 13, but the
+# CLI's RMS leaves out the first row (no speed yet, error 0), so its mean square is over
+# N − 1 rows where the script's is over N: a factor √(N/(N − 1)), 1 + 1.5e-4 on the speeds
+# lesson's 3350 rows (seeds 1001–1010 all differ by 1.49e-4).
+INTEGRATION_AGREEMENT = 1e-3
+
+
+def _cross_checked(metric, own_rms, own_metric):
+    """The CLI's metric, after checking that the CLI's RMS (own_metric) agrees with this
+    script's own integration of the trace (own_rms) within INTEGRATION_AGREEMENT."""
+    def measure(run):
+        cli, own = run.metric(own_metric), own_rms(run)
+        if abs(cli - own) > INTEGRATION_AGREEMENT * max(abs(cli), abs(own)):
+            raise MeasurementError(
+                f"{run.where()}: summary.json's {own_metric} is {cli:.6g} m, integrating the "
+                f"trace's speeds with eq. 13 gives {own:.6g} m: one of the two changed "
+                "meaning; fix scripts/papers/measures.py or the CLI")
+        return run.metric(metric)
+    measure.__doc__ = (f"summary.json's {metric}, checked against the script's own "
+                       f"integration ({own_rms.__name__}).")
+    return measure
+
+
+def wheel_kf_position(metric):
+    """A wheel-KF position metric of summary.json, cross-checked (wheel_kf_position_rms)."""
+    return _cross_checked(metric, wheel_kf_position_rms, "rms_wheel_kf_position_error_m")
+
+
+def velocity_kf_position(metric):
+    """A (v, ω)-KF position metric of summary.json, cross-checked (velocity_kf_position_rms)."""
+    return _cross_checked(metric, velocity_kf_position_rms, "rms_velocity_kf_position_error_m")
+
+
+def _first_wall_contact(run):
+    """The first trace row on which the robot's body touches a wall, None if none does."""
+    return next((k for k, value in enumerate(run.column("touching_wall")) if value == 1.0),
+                None)
+
+
+def first_wall_contact_time(run):
+    """Seconds from the start to the robot's first contact with a wall (None: never)."""
+    k = _first_wall_contact(run)
+    return None if k is None else run.column("t")[k] - run.column("t")[0]
+
+
+def position_error_at_first_contact(run):
+    """The estimate's position error (m) on the row of the first wall contact."""
+    k = _first_wall_contact(run)
+    return None if k is None else position_errors(run)[k]
+
+
+def mean_nees_within_time_average_bounds(run):
+    """Whether summary.json's mean_nees lies in its time_average_nees_99_9_bounds."""
+    lower, upper = run.interval("time_average_nees_99_9_bounds")
+    return lower <= run.metric("mean_nees") <= upper
+
+
 def _time_after(run, start, condition):
     """Seconds from `start` to the first step after it on which condition(k) holds."""
     times = run.column("t")

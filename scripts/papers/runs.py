@@ -51,6 +51,17 @@ class Run:
                 f"{self.where()}: metric '{name}' in summary.json is {value!r}, not a number")
         return float(value)
 
+    def interval(self, name):
+        """A [lower, upper] pair of summary.json's "metrics", e.g. the time-average NEES
+        bounds, as a tuple of two floats."""
+        value = self._metrics.get(name)
+        if (not isinstance(value, list) or len(value) != 2
+                or not all(isinstance(end, (int, float)) for end in value)):
+            raise MeasurementError(
+                f"{self.where()}: {self.directory}/summary.json's metric '{name}' is "
+                f"{value!r}, not a [lower, upper] pair; docs/lessons.md lists the metrics")
+        return float(value[0]), float(value[1])
+
     def setting(self, *path):
         """A value of summary.json's "config", e.g. setting("kidnap", "time")."""
         value = self._summary.get("config", {})

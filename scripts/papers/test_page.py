@@ -31,6 +31,9 @@ class FakeRun:
     def setting(self, *path):
         return self._settings[path]
 
+    def interval(self, name):
+        return tuple(self._metrics[name])
+
 
 SECTION = Section("demo", (
     Row("x:a", "error (m)", "error", "the paper's claim"),
@@ -152,6 +155,44 @@ class TraceMeasures(unittest.TestCase):
         # 1 % too fast on the right wheel: the path bends away, the error is no longer small.
         columns["wheel_kf_right"] = [None] + [1.01 * right] * (steps - 1)
         self.assertGreater(measures.wheel_kf_position_rms(run), 0.01)
+
+    def test_the_clis_integrated_position_is_used_only_where_it_agrees_with_the_script(self):
+        steps, period, v = 200, 0.05, 0.1
+        t = [k * period for k in range(steps)]
+        x = [v * s for s in t]
+        zeros = [0.0] * steps
+        columns = {"t": t, "x_true": x, "y_true": zeros, "x_odo": x, "y_odo": zeros,
+                   "th_odo": zeros, "v_enc": [v] * steps, "w_enc": zeros,
+                   "v_kf": [None] + [1.02 * v] * (steps - 1), "w_kf": [None] + zeros[1:]}
+        own = measures.velocity_kf_position_rms(FakeRun(columns=columns))
+        self.assertGreater(own, 0.01)  # 2 % too fast over 10 m: decimetres
+        ratio = measures.velocity_kf_position("velocity_kf_position_to_odometry_ratio")
+        agreeing = FakeRun({"rms_velocity_kf_position_error_m": 1.0005 * own,
+                            "velocity_kf_position_to_odometry_ratio": 7.0}, columns)
+        self.assertEqual(ratio(agreeing), 7.0)
+        disagreeing = FakeRun({"rms_velocity_kf_position_error_m": 1.002 * own,
+                               "velocity_kf_position_to_odometry_ratio": 7.0}, columns)
+        with self.assertRaises(MeasurementError):
+            ratio(disagreeing)
+
+    def test_first_wall_contact(self):
+        columns = {"t": [10.0, 10.5, 11.0, 11.5], "touching_wall": [0.0, 0.0, 1.0, 1.0],
+                   "x_est": [0.0, 0.0, 0.3, 0.0], "y_est": [0.0, 0.0, 0.4, 0.0],
+                   "x_true": [0.0] * 4, "y_true": [0.0] * 4}
+        run = FakeRun(columns=columns)
+        self.assertEqual(measures.first_wall_contact_time(run), 1.0)
+        self.assertAlmostEqual(measures.position_error_at_first_contact(run), 0.5)
+        columns["touching_wall"] = [0.0] * 4
+        self.assertIsNone(measures.first_wall_contact_time(run))
+        self.assertIsNone(measures.position_error_at_first_contact(run))
+
+    def test_mean_nees_against_its_time_average_bounds(self):
+        def inside(mean):
+            run = FakeRun({"mean_nees": mean, "time_average_nees_99_9_bounds": [2.5, 3.5]})
+            return measures.mean_nees_within_time_average_bounds(run)
+        self.assertTrue(inside(3.2))
+        self.assertFalse(inside(3.6))
+        self.assertFalse(inside(0.12))
 
     def test_integration_refuses_a_trace_whose_odometry_it_cannot_reproduce(self):
         steps = 10
