@@ -10,7 +10,7 @@ namespace legofeup::cli {
 
 void add_config_options(CLI::App& command, ConfigChoice& choice, bool seed_option) {
     command.add_option("--experiment,-e", choice.experiment,
-                       "Guided experiment a … f (its preset is applied first)");
+                       "Guided experiment a … h (its preset is applied first)");
     command
         .add_option("--config,-c", choice.config_file,
                     "TOML configuration applied over the experiment's preset")

@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
                     "Also record every step (raw frames, commands, truth, configuration) to this "
                     "run log, flushed as it goes, for refilter (docs/recording.md)");
 
-    app.add_subcommand("experiments", "List the guided experiments a … f");
+    app.add_subcommand("experiments", "List the guided experiments a … h");
 
     CLI::App* config = app.add_subcommand(
         "config", "Print the configuration a run would use, as a TOML file to edit");

@@ -113,7 +113,7 @@ void add_report_subcommand(CLI::App& app, ReportOptions& options) {
         "report", "Run steps of a lesson and write the student report (report.html, report.pdf)");
     command
         ->add_option("--lesson", options.lesson,
-                     "\"legofeup\" (the built-in lesson, steps a … f) or a lesson file")
+                     "\"legofeup\" (the built-in lesson, steps a … h) or a lesson file")
         ->capture_default_str();
     command
         ->add_option("--submission", options.submission,

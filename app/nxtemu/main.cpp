@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
     app.add_option("--latency-down-ms", command.latency_down_ms, "Brick → host latency, ms")
         ->check(CLI::Range(0.0, 10000.0));
     app.add_option("--experiment,-e", command.experiment,
-                   "Guided experiment a … f: its robot, noise, world and true start");
+                   "Guided experiment a … h: its robot, noise, world and true start");
     app.add_option("--config,-c", command.config_file,
                    "TOML configuration applied over the experiment's preset")
         ->check(CLI::ExistingFile);

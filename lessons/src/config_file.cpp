@@ -270,7 +270,7 @@ RunConfig compose_config(const ConfigSources& sources) {
         const Experiment* experiment = find_experiment(sources.experiment);
         if (experiment == nullptr) {
             throw InputError({{"", 0, "--experiment", sources.experiment,
-                               "unknown experiment (choose a … f, or <lesson>:<step> of another "
+                               "unknown experiment (choose a … h, or <lesson>:<step> of another "
                                "built-in lesson, e.g. beacons:a; `legofeup-cli lesson show "
                                "beacons` lists the steps)"}});
         }

@@ -132,7 +132,7 @@ TEST_F(Cli, RefusesUnknownExperimentsAndBadOptions) {
     const Result unknown = run("run -e z -o " + (dir_ / "x").string());
     EXPECT_EQ(unknown.exit_code, 1);
     EXPECT_NE(unknown.err.find(
-                  "error: --experiment = z: unknown experiment (choose a … f, or <lesson>:<step>"),
+                  "error: --experiment = z: unknown experiment (choose a … h, or <lesson>:<step>"),
               std::string::npos)
         << unknown.err;
     EXPECT_NE(run("run -e f").exit_code, 0);  // --out is required

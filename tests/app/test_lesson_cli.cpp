@@ -36,7 +36,7 @@ TEST_F(LessonCli, CheckAcceptsTheBuiltInLessonAndCountsItsStepsAndChecks) {
     const std::string file = LEGOFEUP_SOURCE_DIR "/resources/lessons/legofeup.toml";
     const Result result = run("lesson check " + file);
     EXPECT_EQ(result.exit_code, 0) << result.err;
-    EXPECT_EQ(result.out, file + ": ok — 6 steps, 20 checks\n");
+    EXPECT_EQ(result.out, file + ": ok — 8 steps, 23 checks\n");
     EXPECT_TRUE(result.err.empty()) << result.err;
 }
 

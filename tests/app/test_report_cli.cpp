@@ -52,13 +52,14 @@ q11 = 3e-7
     EXPECT_NE(html.find("Ana Silva &amp; Rui Costa"), std::string::npos);
     EXPECT_NE(html.find("The ellipse &lt;b&gt;keeps&lt;/b&gt; growing"), std::string::npos);
     EXPECT_NE(html.find("Yes, the NEES stays inside its bounds."), std::string::npos);
-    // Steps b–e were not run; step f ran with the submission's Q11, not the preset's 1e-6.
+    // Steps b–e, g and h were not run; step f ran with the submission's Q11, not the preset's
+    // 1e-6.
     std::size_t not_run = 0;
     for (auto at = html.find("This step was not run."); at != std::string::npos;
          at = html.find("This step was not run.", at + 1)) {
         ++not_run;
     }
-    EXPECT_EQ(not_run, 4U);
+    EXPECT_EQ(not_run, 6U);
     const auto f = html.find("id=\"step-f\"");
     ASSERT_NE(f, std::string::npos);
     const auto q11 = html.find("<code>filter.q11</code>", f);

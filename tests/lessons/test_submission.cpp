@@ -122,7 +122,7 @@ TEST(Submission, BadAnswersAndValuesAreProblemsAtTheirLines) {
     const auto problems = submission_problems_of(R"(lesson = "legofeup"
 students = "A"
 colour = "blue"
-[answers.g]
+[answers.z]
 q1 = "?"
 [answers.a]
 q9 = "?"

@@ -111,8 +111,8 @@ TEST(CommandLine, OtherNumbersChoicesAndWordsAreRefusedWithTheirReason) {
         {{"--theme", "blue"}, "legofeup: --theme = blue: expected system, light or dark"},
         {{"--open-dialog", "x"},
          "legofeup: --open-dialog = x: expected connect, ir-calibration, umbmark or refilter"},
-        {{"--experiment", "g"},
-         "legofeup: --experiment = g: expected a … f or <lesson>:<step> (e.g. beacons:a)"},
+        {{"--experiment", "z"},
+         "legofeup: --experiment = z: expected a … h or <lesson>:<step> (e.g. beacons:a)"},
         {{"--experiment", "f", "--config", "f.toml"},
          "legofeup: --experiment and --config both give the configuration to start with: give "
          "one of them"},

@@ -190,7 +190,7 @@ class MainWindowTest : public QObject {
         QVERIFY(window_->configPanel().message().contains(QStringLiteral("-1")));
         QCOMPARE(session_->config().filter.r11, r11);
         auto* field = window_->findChild<QLineEdit*>(QStringLiteral("filter.r11"));
-        QCOMPARE(field->text(), QStringLiteral("1e-04"));  // the value in use, not the typo
+        QCOMPARE(field->text(), QStringLiteral("0.00013"));  // the value in use, not the typo
 
         enter("filter.q11", QStringLiteral("1e-9x"));
         QVERIFY(window_->configPanel().message().contains(QStringLiteral("not a number")));
@@ -202,7 +202,7 @@ class MainWindowTest : public QObject {
         QVERIFY(window_->configPanel().message().contains(QStringLiteral("whole number")));
         enter("filter.r22", QStringLiteral("1e30"));  // beyond what the filter accepts
         QVERIFY(window_->configPanel().messageIsError());
-        QCOMPARE(session_->config().filter.r22, 1e-4);
+        QCOMPARE(session_->config().filter.r22, 1.3e-4);  // step f's, unchanged
     }
 
     void theLogSliderProposesDecadesAndTheFieldShowsThem() {
@@ -311,7 +311,7 @@ class MainWindowTest : public QObject {
         QCOMPARE(problems.size(), 1);
         QVERIFY2(problems.front().contains(QStringLiteral("broken.toml:3")),
                  qPrintable(problems.front()));
-        QCOMPARE(session_->config().filter.r11, 1e-4);
+        QCOMPARE(session_->config().filter.r11, 1.3e-4);  // step f's, in use before the load
     }
 
     void closingSavesTheConfigurationAndTheLayout() {

@@ -89,7 +89,7 @@ CommandLine read_command_line(const QStringList& arguments) {
                                      QObject::tr("Show the version and quit."));
     const QCommandLineOption experiment(
         QStringLiteral("experiment"),
-        QObject::tr("Start with experiment ID: a … f, or <lesson>:<step> (e.g. laser:a)."),
+        QObject::tr("Start with experiment ID: a … h, or <lesson>:<step> (e.g. laser:a)."),
         QStringLiteral("ID"));
     const QCommandLineOption config(
         QStringLiteral("config"),
@@ -175,7 +175,7 @@ CommandLine read_command_line(const QStringList& arguments) {
     if (parser.isSet(experiment)
         && lessons::find_experiment(options.experiment.toStdString()) == nullptr) {
         return refused(experiment, options.experiment,
-                       QObject::tr("expected a … f or <lesson>:<step> (e.g. beacons:a)"));
+                       QObject::tr("expected a … h or <lesson>:<step> (e.g. beacons:a)"));
     }
     if (parser.isSet(theme) && !one_of(options.theme, kThemes)) {
         return refused(theme, options.theme, QObject::tr("expected system, light or dark"));
