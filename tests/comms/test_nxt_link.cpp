@@ -200,6 +200,7 @@ TEST(NxtLink, FramesMapTheWiringAndTimeAdvances) {
     ScriptedBrick brick(std::ref(firmware));
     NxtLink link(test_options());
     link.connect(brick.take_host_end());
+    double first_time = 0.0;
     double last_time = 0.0;
     for (int i = 0; i < 5; ++i) {
         firmware.count_offset = 10 * i;
@@ -216,13 +217,18 @@ TEST(NxtLink, FramesMapTheWiringAndTimeAdvances) {
         // (Two consecutive replies may be closer: a late reply can be followed by a prompt one.)
         EXPECT_GE(frame->time, 0.020 * i - 1e-3);
         EXPECT_GE(frame->time, last_time);
+        first_time = i == 0 ? frame->time : first_time;
         last_time = frame->time;
     }
     const LinkQuality quality = link.quality();
     EXPECT_EQ(quality.cycles, 5u);
     EXPECT_EQ(quality.timeouts, 0u);
-    EXPECT_GT(quality.rate_hz(), 0.0);
-    EXPECT_LE(quality.rate_hz(), 1.0 / 0.020 + 1.0);
+    // The rate is that of the frames' own times: 4 cycles from the first frame to the last.
+    // (Not bounded by 1/min_period: when the first reply is late, the next four requests,
+    // spaced from the requests, not the replies, span a little less than 4 periods.)
+    ASSERT_GT(last_time, first_time);
+    EXPECT_NEAR(quality.rate_hz(), 4.0 / (last_time - first_time), 1e-6 * quality.rate_hz());
+    EXPECT_LE(quality.rate_hz(), 4.0 / (0.080 - 1e-3 - first_time));
 }
 
 TEST(NxtLink, CommandsBecomeRegulatedPowerWithoutReply) {
