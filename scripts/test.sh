@@ -41,19 +41,6 @@ realtime_status=0
 wait "$realtime" || realtime_status=$?
 echo "-- the real-time tests:"
 cat build/asan-realtime.log
-# A test that failed among the others may be timing-sensitive under the load of the whole
-# suite (the lossy-link relay's exact counts are: tests/simserver/test_lossy_link.cpp). At most two
-# such are run once more, alone; they pass only if they pass then, and they are named as flaky so
-# that nobody mistakes a pass for a clean one. More failures than that are never re-run.
-mapfile -t failed < <(sed -n 's/^[[:space:]]*[0-9]* - \(.*\) (Failed)$/\1/p' build/asan-tests.log)
-if [[ $status -ne 0 && $realtime_status -eq 0 && ${#failed[@]} -ge 1 && ${#failed[@]} -le 2 ]]; then
-    echo "-- re-running alone what failed under the suite's load: ${failed[*]}"
-    names=$(printf '%s|' "${failed[@]}" | sed 's/[.]/[.]/g; s/|$//')
-    if ctest --preset asan --tests-regex "^(${names})\$" --output-on-failure; then
-        status=0
-        echo "FLAKY (failed under load, passed alone): ${failed[*]}" >&2
-    fi
-fi
 if [[ $status -ne 0 || $realtime_status -ne 0 ]]; then
     echo "asan: tests failed (above)." >&2
     exit 1
