@@ -37,7 +37,7 @@ laser-far-kidnap.png           app -                                --experiment
 nxt-connect.png                test ui_connect_dialog_test scanningWithoutBlueZSaysSoAtOnceAndReturns
 lesson-panel.png               test ui_lesson_panel_test theConclusionIsHiddenUntilTheRunFinishesThenShownWithTheRunsOwnNumbers
 refilter.png                   test ui_refilter_dialog_test changingQGivesASecondEstimateOnTheSameReadings
-ir-calibration.png             test ui_calibration_dialogs_test theIrFitIsTheLibrarysFitAndIsShown
+ir-calibration.png             test ui_calibration_dialogs_test rowsThatSayTheirSensorGiveItsOwnCurve
 umbmark.png                    test ui_calibration_dialogs_test umbmarkIsTheLibrarysAndIsSavedIntoTheProfile
 '
 

@@ -151,20 +151,6 @@ void print_ir_fit(const std::string& source, const std::vector<lessons::IrCalibr
     }
 }
 
-// The fit names points by number: say which file (and which sensor's points) they are in.
-lessons::IrFit fit_ir_points(std::span<const lessons::IrCalibrationPoint> points,
-                             const SharpIrCurve& start, const std::string& source) {
-    try {
-        return lessons::fit_ir_curve(points, start);
-    } catch (const InputError& error) {
-        std::vector<lessons::InputProblem> problems = error.problems();
-        for (lessons::InputProblem& problem : problems) {
-            problem.source = problem.source.empty() ? source : problem.source;
-        }
-        throw InputError(std::move(problems));
-    }
-}
-
 // A fit that did not converge, or a curve the loop would refuse, is reported: false.
 bool usable_fit(const lessons::IrFit& fit, const std::string& name) {
     if (!fit.converged) {
@@ -182,35 +168,24 @@ bool usable_fit(const lessons::IrFit& fit, const std::string& name) {
     return issues.empty();
 }
 
-std::string sensor_points_source(const std::string& file, IrSensor sensor) {
-    return file + (sensor == kFrontSensor ? " (front sensor's points)" : " (rear sensor's points)");
-}
-
 int calibrate_ir(const CalibrateOptions& options) {
     std::vector<lessons::IrCalibrationPoint> points;
     RobotProfile profile;
-    lessons::IrFit fit;  // all points: the one curve of both sensors (the paper's)
-    // Each sensor's own curve, from its points when the file says which sensor took them.
-    std::array<std::optional<lessons::IrFit>, kIrSensorCount> sensor_fits;
+    // The one curve of both sensors (the paper's) from every point, and each sensor's own
+    // from its points when the file says which sensor took them.
+    lessons::IrCalibration calibration;
     try {
         points = lessons::read_ir_points_csv(options.points_file);
         profile = starting_profile(options.profile);
-        fit = fit_ir_points(points, profile.ir_curve, options.points_file);
-        for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
-            const auto own = lessons::points_of(points, sensor);
-            if (!own.empty()) {
-                sensor_fits[static_cast<std::size_t>(sensor)] = fit_ir_points(
-                    own, profile.ir_curve, sensor_points_source(options.points_file, sensor));
-            }
-        }
+        calibration = lessons::fit_ir_calibration(points, profile.ir_curve, options.points_file);
     } catch (const InputError& error) {
         report(error);
         return kExitBadInput;
     }
-    print_ir_fit(options.points_file, points, fit);
+    print_ir_fit(options.points_file, points, calibration.both);
     for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
-        if (const auto& own = sensor_fits[static_cast<std::size_t>(sensor)]) {
-            print_ir_fit(sensor_points_source(options.points_file, sensor),
+        if (const auto& own = calibration.own[static_cast<std::size_t>(sensor)]) {
+            print_ir_fit(lessons::sensor_points_source(options.points_file, sensor),
                          lessons::points_of(points, sensor), *own);
         }
     }
@@ -219,29 +194,24 @@ int calibrate_ir(const CalibrateOptions& options) {
         try {
             fs::create_directories(options.plot_directory);
             const fs::path base = fs::path(options.plot_directory) / "ir_calibration";
-            write_ir_plot(points, fit, profile.ir_curve, base);
+            write_ir_plot(points, calibration.both, profile.ir_curve, base);
             std::printf("Plot written: %s.png and .svg\n", base.string().c_str());
         } catch (const std::exception& error) {
             std::cerr << "error: " << error.what() << '\n';
             return kExitOutputFailed;
         }
     }
-    bool usable = usable_fit(fit, "ir_curve");
+    bool usable = usable_fit(calibration.both, "ir_curve");
     for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
-        if (const auto& own = sensor_fits[static_cast<std::size_t>(sensor)]) {
+        if (const auto& own = calibration.own[static_cast<std::size_t>(sensor)]) {
             usable = usable_fit(*own, ir_sensor_curve_name(sensor)) && usable;
         }
     }
     if (!usable) {
         return kExitBadInput;
     }
-    profile.ir_curve = fit.curve;
-    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
-        const auto& own = sensor_fits[static_cast<std::size_t>(sensor)];
-        // A file without the sensor column fits one curve for both: it replaces any own one.
-        profile.ir_sensor_parameters[static_cast<std::size_t>(sensor)] =
-            own ? std::optional(curve_parameters(own->curve)) : std::nullopt;
-    }
+    // A file without the sensor column fits one curve for both: it replaces any own one.
+    lessons::apply_ir_calibration(profile, calibration);
     return write_profile(options.profile, profile);
 }
 

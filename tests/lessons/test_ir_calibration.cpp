@@ -98,6 +98,60 @@ TEST(IrCurveFit, RecoversExactParametersFromAnyReasonableStart) {
     }
 }
 
+// Two units with their own curves, measured at the same A/D values: each sensor's own fit
+// recovers its unit exactly, the one curve of both lies between them, and the profile gets
+// both; points that do not say their sensor fit the one curve only and clear any own curve.
+TEST(IrCalibration, EachSensorsOwnPointsGiveItsOwnCurveAndTheProfileBoth) {
+    std::vector<IrCalibrationPoint> points;
+    for (double adc : adc_values(10)) {
+        points.push_back({adc, eq2(adc, 0.01, 2700.0, 4.0, 0.8), legofeup::kFrontSensor});
+        points.push_back({adc, eq2(adc, 0.01, 3100.0, 7.0, 1.2), legofeup::kRearSensor});
+    }
+    const legofeup::lessons::IrCalibration calibration =
+        legofeup::lessons::fit_ir_calibration(points, SharpIrCurve{}, "bench.csv");
+    const auto& front = calibration.own[0];  // [kFrontSensor]
+    const auto& rear = calibration.own[1];
+    ASSERT_TRUE(front && rear);
+    EXPECT_NEAR(front->curve.c_m, 2700.0, 1e-6 * 2700.0);
+    EXPECT_NEAR(front->curve.c_r, 4.0, 1e-6 * 4.0);
+    EXPECT_NEAR(rear->curve.c_m, 3100.0, 1e-6 * 3100.0);
+    EXPECT_NEAR(rear->curve.b, 1.2, 1e-6 * 1.2);
+    EXPECT_EQ(front->residuals.size(), 10u);
+    // The one curve cannot pass through both units' points: a residual of the spread.
+    EXPECT_GT(calibration.both.rms_residual, 1e-3);
+    const IrFit both_alone = fit_ir_curve(points, SharpIrCurve{});
+    EXPECT_EQ(calibration.both.curve.c_m, both_alone.curve.c_m);
+
+    legofeup::lessons::RobotProfile profile;
+    profile.ir_curve.max_range = 0.25;  // the profile's own range stays
+    legofeup::lessons::apply_ir_calibration(profile, calibration);
+    EXPECT_EQ(profile.ir_curve.c_m, calibration.both.curve.c_m);
+    EXPECT_EQ(profile.ir_curve.max_range, 0.25);
+    ASSERT_TRUE(profile.ir_sensor_parameters[0]);
+    EXPECT_EQ(profile.ir_sensor_parameters[0]->c_m, front->curve.c_m);
+    EXPECT_EQ(profile.ir_sensor_parameters[1]->c_r, rear->curve.c_r);
+
+    for (IrCalibrationPoint& point : points) {
+        point.sensor.reset();
+    }
+    const auto unsaid = legofeup::lessons::fit_ir_calibration(points, SharpIrCurve{}, "x.csv");
+    EXPECT_FALSE(unsaid.own[0] || unsaid.own[1]);
+    legofeup::lessons::apply_ir_calibration(profile, unsaid);
+    EXPECT_FALSE(profile.ir_sensor_parameters[0] || profile.ir_sensor_parameters[1]);
+}
+
+TEST(IrCalibration, AProblemWithOneSensorsPointsNamesTheSensor) {
+    std::vector<IrCalibrationPoint> points;
+    for (double adc : adc_values(8)) {
+        points.push_back({adc, eq2(adc, 0.01, 2914.0, 5.0, 1.0), legofeup::kFrontSensor});
+    }
+    points.push_back({400.0, 0.1, legofeup::kRearSensor});  // the rear took one point only
+    const std::string message = input_error_of(
+        [&] { legofeup::lessons::fit_ir_calibration(points, SharpIrCurve{}, "bench.csv"); });
+    EXPECT_NE(message.find("bench.csv (rear sensor's points)"), std::string::npos) << message;
+    EXPECT_EQ(message.find("front sensor's"), std::string::npos) << message;
+}
+
 TEST(IrCurveFit, ResidualsAreMeasuredMinusFitted) {
     std::vector<IrCalibrationPoint> points;
     for (double adc : adc_values(8)) {

@@ -109,7 +109,7 @@ class CalibrationDialogsTest : public QObject {
 
         const lessons::IrFit expected =
             lessons::fit_ir_curve(measured.points, session_->resolved().loop.ir_curve);
-        const lessons::IrFit& fit = *dialog.fit();
+        const lessons::IrFit fit = *dialog.fit();
         QCOMPARE(fit.curve.c_m, expected.curve.c_m);
         QCOMPARE(fit.curve.c_r, expected.curve.c_r);
         QCOMPARE(fit.curve.b, expected.curve.b);
@@ -120,7 +120,6 @@ class CalibrationDialogsTest : public QObject {
         QVERIFY(shown.contains(QString::number(expected.curve.c_r, 'g', 5)));
         QVERIFY(shown.contains(QString::number(expected.rms_residual * 1000.0, 'f', 2)));
         QVERIFY(dialog.saveButton()->isEnabled());
-        testing::save_screenshot(dialog, "ir-calibration");
 
         // The plots: every point, the fitted curve through them, every residual in mm.
         QCOMPARE(dialog.curvePlot()->graph(0)->data()->size(), int(measured.points.size()));
@@ -220,6 +219,86 @@ class CalibrationDialogsTest : public QObject {
                  dialog.fit()->curve.c_m);
     }
 
+    // Rows that say their sensor give it its own curve, as `calibrate ir` does with a sensor
+    // column: the library's calibration, shown, drawn and saved; rows that say nothing give
+    // the one curve only, and saving it removes the sensors' own curves from the profile.
+    void rowsThatSayTheirSensorGiveItsOwnCurve() {
+        IrCalibrationDialog dialog(*session_);
+        dialog.show();
+        const IrMeasurements measured;  // the front unit
+        QStringList adc = measured.adc;
+        QStringList distance = measured.distance;
+        std::vector<lessons::IrCalibrationPoint> points;
+        for (lessons::IrCalibrationPoint point : measured.points) {
+            point.sensor = kFrontSensor;
+            points.push_back(point);
+        }
+        for (const lessons::IrCalibrationPoint& point : measured.points) {  // a rear unit 8 % off
+            const double a = std::round(3450.0 / (point.distance / 0.01 + 1.5) - 12.0);
+            adc << QString::number(a);
+            distance << QString::number(point.distance);
+            points.push_back({a, point.distance, kRearSensor});
+        }
+        fill(*dialog.table(), adc, distance);
+        for (int row = 0; row < dialog.table()->rowCount(); ++row) {
+            dialog.table()->setChoice(row, row < measured.adc.size() ? 1 : 2);
+        }
+        QVERIFY2(dialog.runFit(), qPrintable(dialog.messageLabel()->text()));
+        const lessons::IrCalibration expected =
+            lessons::fit_ir_calibration(points, session_->resolved().loop.ir_curve, {});
+        const auto& shown = dialog.calibration();
+        QVERIFY(shown.has_value());
+        QVERIFY(shown->own[0].has_value() && shown->own[1].has_value());
+        QCOMPARE(shown->own[0]->curve.c_m, expected.own[0]->curve.c_m);
+        QCOMPARE(shown->own[1]->curve.c_m, expected.own[1]->curve.c_m);
+        QCOMPARE(shown->both.curve.c_m, expected.both.curve.c_m);
+        QVERIFY(std::abs(shown->own[1]->curve.c_m - 3450.0) < 100.0);
+        const QString text = dialog.resultLabel()->text();
+        QVERIFY2(text.contains(QStringLiteral("Front sensor's own curve: C_M = %1")
+                                   .arg(expected.own[0]->curve.c_m, 0, 'g', 6)),
+                 qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("Rear sensor's own curve")));
+        QVERIFY(dialog.curvePlot()->graph(3)->data()->size() > 100);
+        QVERIFY(dialog.curvePlot()->graph(4)->data()->size() > 100);
+        testing::save_screenshot(dialog, "ir-calibration");
+
+        const QString file = existingProfile("two-sensors.toml");
+        QVERIFY2(dialog.saveToProfile(file), qPrintable(dialog.messageLabel()->text()));
+        lessons::RobotProfile read = lessons::load_robot_profile(file.toStdString());
+        QVERIFY(read.ir_sensor_parameters[1].has_value());
+        QCOMPARE(read.ir_sensor_parameters[1]->c_m, expected.own[1]->curve.c_m);
+        QCOMPARE(read.ir_sensor_parameters[0]->b, expected.own[0]->curve.b);
+        QCOMPARE(read.ir_curve.c_m, expected.both.curve.c_m);
+
+        // Changing a row's sensor is a change of the points: the fit is gone.
+        dialog.table()->setChoice(0, 0);
+        QVERIFY(!dialog.calibration().has_value());
+        for (int row = 0; row < dialog.table()->rowCount(); ++row) {
+            dialog.table()->setChoice(row, 0);
+        }
+        QVERIFY(dialog.runFit());
+        QVERIFY(!dialog.calibration()->own[0] && !dialog.calibration()->own[1]);
+        QVERIFY(!dialog.resultLabel()->text().contains(QStringLiteral("own curve")));
+        QVERIFY(dialog.saveToProfile(file));
+        read = lessons::load_robot_profile(file.toStdString());
+        QVERIFY(!read.ir_sensor_parameters[0] && !read.ir_sensor_parameters[1]);
+    }
+
+    void aCsvFilesSensorColumnFillsTheTablesSensors() {
+        IrCalibrationDialog dialog(*session_);
+        QFile csv(path("sensors.csv"));
+        QVERIFY(csv.open(QIODevice::WriteOnly));
+        csv.write("adc,distance_m,sensor\n580,0.04,front\n300,0.09,rear\n");
+        csv.close();
+        QVERIFY2(dialog.importCsv(csv.fileName()), qPrintable(dialog.messageLabel()->text()));
+        QCOMPARE(dialog.table()->choice(0), 1);
+        QCOMPARE(dialog.table()->choice(1), 2);
+        const auto read = dialog.points();
+        QVERIFY(read.has_value());
+        QCOMPARE((*read)[0].sensor, std::optional<IrSensor>(kFrontSensor));
+        QCOMPARE((*read)[1].sensor, std::optional<IrSensor>(kRearSensor));
+    }
+
     void takeCurrentAdcAveragesTheLiveRobotsLatestFrames() {
         IrCalibrationDialog dialog(*session_);
         QVERIFY(!dialog.takeFrontButton()->isEnabled());  // no run yet
@@ -246,6 +325,7 @@ class CalibrationDialogsTest : public QObject {
         QCOMPARE(count, kAdcAverageFrames);
         const double expected = std::round(sum / count * 10.0) / 10.0;
         QCOMPARE(dialog.table()->item(2, 0)->text().toDouble(), expected);
+        QCOMPARE(dialog.table()->choice(2), 2);  // the row now says the rear sensor took it
         session_->stop();
     }
 

@@ -11,6 +11,7 @@
 #include <QSplitter>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "legofeup/lessons/input_error.hpp"
@@ -37,6 +38,26 @@ QCustomPlot* make_plot(const QString& title, const QString& x_label, const QStri
     return plot;
 }
 
+/// The sensor column's choices, in this order: a row that does not say which sensor took it,
+/// then front and rear.
+constexpr int kNotSaid = 0;
+constexpr int kFrontChoice = 1;
+constexpr int kRearChoice = 2;
+
+std::optional<IrSensor> sensor_of_choice(int choice) {
+    if (choice == kNotSaid) {
+        return std::nullopt;
+    }
+    return choice == kFrontChoice ? kFrontSensor : kRearSensor;
+}
+
+int choice_of_sensor(std::optional<IrSensor> sensor) {
+    if (!sensor) {
+        return kNotSaid;
+    }
+    return *sensor == kFrontSensor ? kFrontChoice : kRearChoice;
+}
+
 /// eq. 2 without the range check: the fitted curve drawn through the points.
 double curve_distance(double adc, const SharpIrCurve& curve) {
     return curve.a * (curve.c_m / (adc + curve.c_r) - curve.b);
@@ -53,24 +74,28 @@ IrCalibrationDialog::IrCalibrationDialog(const Session& session, QWidget* parent
         tr("Put a flat target at known distances from the sensor's front face, note the A/D "
            "value at each (or take it from the running robot), then fit the paper's curve "
            "(eq. 2) D = a·(C_M/(A + C_R) − b), a = %1 m. At least 4 points with 3 different "
-           "A/D values; 8–12 from 4 cm to 30 cm give a good fit.")
+           "A/D values; 8–12 from 4 cm to 30 cm give a good fit. Points that say which sensor "
+           "took them also give that sensor its own curve, as two real sensors differ.")
             .arg(start_.a),
         this);
     intro->setWordWrap(true);
 
-    table_ = new NumberTable({tr("A/D"), tr("distance (m)")}, this);
+    table_ = new NumberTable({tr("A/D"), tr("distance (m)")}, this,
+                             ChoiceColumn{tr("sensor"), {tr("not said"), tr("front"), tr("rear")}});
     table_->setObjectName(QStringLiteral("irPoints"));
     auto* add = new QPushButton(tr("&Add row"), this);
     auto* remove = new QPushButton(tr("Re&move rows"), this);
     auto* import = new QPushButton(tr("&Import CSV…"), this);
     import->setToolTip(
         tr("A CSV file with the header adc,distance_m and one A,D pair a line "
-           "(D in metres), as legofeup-cli calibrate ir reads"));
+           "(D in metres), or adc,distance_m,sensor and A,D,front or A,D,rear, as "
+           "legofeup-cli calibrate ir reads"));
     take_front_ = new QPushButton(tr("Take &front A/D"), this);
     take_rear_ = new QPushButton(tr("Take &rear A/D"), this);
     for (QPushButton* take : {take_front_, take_rear_}) {
         take->setToolTip(tr("The A/D value of the running robot's sensor, averaged over the "
-                            "last %1 frames, into the selected row (or a new one)")
+                            "last %1 frames, into the selected row (or a new one), marked "
+                            "as that sensor's")
                              .arg(kAdcAverageFrames));
     }
     fit_button_ = new QPushButton(tr("F&it"), this);
@@ -88,7 +113,8 @@ IrCalibrationDialog::IrCalibrationDialog(const Session& session, QWidget* parent
     rows->addWidget(take_rear_, 1, 1);
     rows->addWidget(fit_button_, 1, 2);
 
-    result_ = result_label(tr("No fit yet."), "irResult", 3, this);  // the fit, its quality, saved
+    // The fit, its quality, each sensor's own curve, saved.
+    result_ = result_label(tr("No fit yet."), "irResult", 5, this);
     message_ = message_label("irMessage", this);
 
     auto* left = new QWidget(this);
@@ -117,6 +143,12 @@ IrCalibrationDialog::IrCalibrationDialog(const Session& session, QWidget* parent
     QCPGraph* before = curve_plot_->addGraph();  // graph 2: the curve before the fit
     before->setPen(QPen(look.text, 1.0, Qt::DashLine));
     before->setName(tr("before (configuration)"));
+    QCPGraph* front_own = curve_plot_->addGraph();  // graph 3: the front sensor's own curve
+    front_own->setPen(QPen(look.series[2], 1.5));
+    front_own->setName(tr("front sensor's own"));
+    QCPGraph* rear_own = curve_plot_->addGraph();  // graph 4: the rear sensor's own curve
+    rear_own->setPen(QPen(look.series[3], 1.5));
+    rear_own->setName(tr("rear sensor's own"));
     curve_plot_->legend->setVisible(true);
     curve_plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
     auto* zero = new QCPItemStraightLine(residual_plot_);
@@ -177,17 +209,21 @@ void IrCalibrationDialog::showProblem(const QString& text) {
 
 std::optional<std::vector<lessons::IrCalibrationPoint>> IrCalibrationDialog::points() {
     QString problem;
-    const auto rows = table_->numbers(&problem);
+    const auto rows = table_->rows(&problem);
     if (!rows) {
         showProblem(problem);
         return std::nullopt;
     }
     std::vector<lessons::IrCalibrationPoint> points;
     points.reserve(rows->size());
-    for (const std::vector<double>& row : *rows) {
-        points.push_back({row[0], row[1]});
+    for (const NumberTable::Row& row : *rows) {
+        points.push_back({row.numbers[0], row.numbers[1], sensor_of_choice(row.choice)});
     }
     return points;
+}
+
+std::optional<lessons::IrFit> IrCalibrationDialog::fit() const {
+    return calibration_ ? std::optional(calibration_->both) : std::nullopt;
 }
 
 bool IrCalibrationDialog::runFit() {
@@ -197,7 +233,7 @@ bool IrCalibrationDialog::runFit() {
         return false;
     }
     try {
-        fit_ = lessons::fit_ir_curve(*measured, start_);
+        calibration_ = lessons::fit_ir_calibration(*measured, start_, {});
     } catch (const lessons::InputError& error) {
         clearFit();
         showProblem(QString::fromUtf8(error.what()));
@@ -210,10 +246,10 @@ bool IrCalibrationDialog::runFit() {
 }
 
 void IrCalibrationDialog::clearFit() {
-    if (!fit_) {
+    if (!calibration_) {
         return;
     }
-    fit_.reset();
+    calibration_.reset();
     save_->setEnabled(false);
     result_->setText(tr("The points changed: fit again."));
 }
@@ -223,25 +259,48 @@ void IrCalibrationDialog::showFit() {
     QCPGraph* fitted = curve_plot_->graph(1);
     QCPGraph* before = curve_plot_->graph(2);
     QCPGraph* residuals = residual_plot_->graph(0);
-    for (QCPGraph* graph : {measured, fitted, before, residuals}) {
+    const std::array<QCPGraph*, kIrSensorCount> own_curves{curve_plot_->graph(3),
+                                                           curve_plot_->graph(4)};
+    for (QCPGraph* graph : {measured, fitted, before, residuals, own_curves[0], own_curves[1]}) {
         graph->data()->clear();
     }
     double lowest = 0.0;
     double highest = start_.adc_max;
-    if (fit_) {
-        const SharpIrCurve& curve = fit_->curve;
-        result_->setText(
+    if (calibration_) {
+        const lessons::IrFit& both = calibration_->both;
+        const SharpIrCurve& curve = both.curve;
+        QStringList lines{
             tr("C_M = %1   C_R = %2   b = %3   (a = %4 m)\n"
                "RMS residual %5 mm, largest %6 mm, over %7 points; %8 after %9 iterations.")
                 .arg(curve.c_m, 0, 'g', 6)
                 .arg(curve.c_r, 0, 'g', 5)
                 .arg(curve.b, 0, 'g', 5)
                 .arg(curve.a)
-                .arg(fit_->rms_residual * 1000.0, 0, 'f', 2)
-                .arg(fit_->max_abs_residual * 1000.0, 0, 'f', 2)
+                .arg(both.rms_residual * 1000.0, 0, 'f', 2)
+                .arg(both.max_abs_residual * 1000.0, 0, 'f', 2)
                 .arg(fitted_points_.size())
-                .arg(fit_->converged ? tr("converged") : tr("NOT converged"))
-                .arg(fit_->iterations));
+                .arg(both.converged ? tr("converged") : tr("NOT converged"))
+                .arg(both.iterations)};
+        for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+            const auto& own = calibration_->own[static_cast<std::size_t>(sensor)];
+            if (!own) {
+                continue;
+            }
+            const QString text =
+                sensor == kFrontSensor
+                    ? tr(
+                        "Front sensor's own curve: C_M = %1   C_R = %2   b = %3; RMS residual "
+                        "%4 mm over %5 points.")
+                    : tr(
+                        "Rear sensor's own curve: C_M = %1   C_R = %2   b = %3; RMS residual "
+                        "%4 mm over %5 points.");
+            lines << text.arg(own->curve.c_m, 0, 'g', 6)
+                         .arg(own->curve.c_r, 0, 'g', 5)
+                         .arg(own->curve.b, 0, 'g', 5)
+                         .arg(own->rms_residual * 1000.0, 0, 'f', 2)
+                         .arg(own->residuals.size());
+        }
+        result_->setText(lines.join(QLatin1Char('\n')));
         const auto [min_point, max_point] =
             std::minmax_element(fitted_points_.begin(), fitted_points_.end(),
                                 [](const auto& p, const auto& q) { return p.adc < q.adc; });
@@ -250,12 +309,17 @@ void IrCalibrationDialog::showFit() {
         highest = std::min(max_point->adc + margin, static_cast<double>(start_.adc_max));
         for (std::size_t i = 0; i < fitted_points_.size(); ++i) {
             measured->addData(fitted_points_[i].adc, fitted_points_[i].distance);
-            residuals->addData(fitted_points_[i].adc, fit_->residuals[i] * 1000.0);
+            residuals->addData(fitted_points_[i].adc, both.residuals[i] * 1000.0);
         }
         for (int i = 0; i <= kCurvePoints; ++i) {
             const double adc = lowest + (highest - lowest) * i / kCurvePoints;
             fitted->addData(adc, curve_distance(adc, curve));
             before->addData(adc, curve_distance(adc, start_));
+            for (std::size_t sensor = 0; sensor < kIrSensorCount; ++sensor) {
+                if (const auto& own = calibration_->own[sensor]) {
+                    own_curves[sensor]->addData(adc, curve_distance(adc, own->curve));
+                }
+            }
         }
     }
     for (QCustomPlot* plot : {curve_plot_, residual_plot_}) {
@@ -285,6 +349,9 @@ bool IrCalibrationDialog::importCsv(const QString& path) {
             rows.push_back({point.adc, point.distance});
         }
         table_->setRows(rows);
+        for (std::size_t row = 0; row < read.size(); ++row) {
+            table_->setChoice(static_cast<int>(row), choice_of_sensor(read[row].sensor));
+        }
     } catch (const lessons::InputError& error) {
         showProblem(QString::fromUtf8(error.what()));
         return false;
@@ -303,12 +370,15 @@ void IrCalibrationDialog::askImport() {
 }
 
 bool IrCalibrationDialog::saveToProfile(const QString& path) {
-    if (!fit_) {
+    if (!calibration_) {
         showProblem(tr("Fit first: there is nothing to save."));
         return false;
     }
     return save_and_report(
-        path, [this](lessons::RobotProfile& profile) { apply_ir_fit(profile, fit_->curve); },
+        path,
+        [this](lessons::RobotProfile& profile) {
+            lessons::apply_ir_calibration(profile, *calibration_);
+        },
         *result_, *message_);
 }
 
@@ -343,6 +413,7 @@ bool IrCalibrationDialog::takeCurrentAdc(int sensor) {
         row = table_->addRow();
     }
     table_->setNumber(row, 0, std::round(sum / count * 10.0) / 10.0);
+    table_->setChoice(row, sensor == 0 ? kFrontChoice : kRearChoice);
     table_->setCurrentCell(row, 1);
     showProblem({});
     return true;

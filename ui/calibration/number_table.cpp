@@ -1,5 +1,6 @@
 #include "legofeup/ui/calibration/number_table.hpp"
 
+#include <QComboBox>
 #include <QHeaderView>
 #include <algorithm>
 #include <set>
@@ -8,9 +9,12 @@
 
 namespace legofeup::ui {
 
-NumberTable::NumberTable(const QStringList& headers, QWidget* parent)
-    : QTableWidget(0, static_cast<int>(headers.size()), parent), headers_(headers) {
-    setHorizontalHeaderLabels(headers);
+NumberTable::NumberTable(const QStringList& headers, QWidget* parent,
+                         std::optional<ChoiceColumn> choice)
+    : QTableWidget(0, static_cast<int>(headers.size()) + (choice ? 1 : 0), parent),
+      headers_(headers),
+      choice_(std::move(choice)) {
+    setHorizontalHeaderLabels(choice_ ? headers + QStringList{choice_->header} : headers);
     horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
     setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -19,7 +23,7 @@ NumberTable::NumberTable(const QStringList& headers, QWidget* parent)
 int NumberTable::addRow(const std::vector<double>& values) {
     const int row = rowCount();
     insertRow(row);
-    for (int column = 0; column < columnCount(); ++column) {
+    for (int column = 0; column < numberColumns(); ++column) {
         auto* item = new QTableWidgetItem;
         item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         setItem(row, column, item);
@@ -27,7 +31,33 @@ int NumberTable::addRow(const std::vector<double>& values) {
             setNumber(row, column, values[static_cast<std::size_t>(column)]);
         }
     }
+    if (choice_) {
+        // The drop-down shows the choice; the cell's item holds its text, so that a change
+        // is an itemChanged like an edited number.
+        const int column = numberColumns();
+        auto* item = new QTableWidgetItem(choice_->choices.value(0));
+        item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+        setItem(row, column, item);
+        auto* box = new QComboBox(this);
+        box->addItems(choice_->choices);
+        connect(box, &QComboBox::currentTextChanged, this,
+                [item](const QString& text) { item->setText(text); });
+        setCellWidget(row, column, box);
+    }
     return row;
+}
+
+int NumberTable::choice(int row) const {
+    const auto* box =
+        choice_ ? qobject_cast<QComboBox*>(cellWidget(row, numberColumns())) : nullptr;
+    return box != nullptr ? box->currentIndex() : 0;
+}
+
+void NumberTable::setChoice(int row, int index) {
+    if (auto* box =
+            choice_ ? qobject_cast<QComboBox*>(cellWidget(row, numberColumns())) : nullptr) {
+        box->setCurrentIndex(index);
+    }
 }
 
 void NumberTable::removeSelectedRows() {
@@ -61,10 +91,23 @@ void NumberTable::setNumber(int row, int column, double value) {
 }
 
 std::optional<std::vector<std::vector<double>>> NumberTable::numbers(QString* problem) const {
-    std::vector<std::vector<double>> rows;
+    const std::optional<std::vector<Row>> read = rows(problem);
+    if (!read) {
+        return std::nullopt;
+    }
+    std::vector<std::vector<double>> numbers;
+    numbers.reserve(read->size());
+    for (const Row& row : *read) {
+        numbers.push_back(row.numbers);
+    }
+    return numbers;
+}
+
+std::optional<std::vector<NumberTable::Row>> NumberTable::rows(QString* problem) const {
+    std::vector<Row> rows;
     for (int row = 0; row < rowCount(); ++row) {
         QStringList texts;
-        for (int column = 0; column < columnCount(); ++column) {
+        for (int column = 0; column < numberColumns(); ++column) {
             const QTableWidgetItem* cell = item(row, column);
             texts << (cell != nullptr ? cell->text().trimmed() : QString());
         }
@@ -72,7 +115,7 @@ std::optional<std::vector<std::vector<double>>> NumberTable::numbers(QString* pr
             continue;
         }
         std::vector<double> values;
-        for (int column = 0; column < columnCount(); ++column) {
+        for (int column = 0; column < numberColumns(); ++column) {
             const QString& text = texts[column];
             const std::optional<double> value = parse_number(text);
             if (!value) {
@@ -91,7 +134,7 @@ std::optional<std::vector<std::vector<double>>> NumberTable::numbers(QString* pr
             }
             values.push_back(*value);
         }
-        rows.push_back(std::move(values));
+        rows.push_back({std::move(values), choice(row)});
     }
     return rows;
 }

@@ -31,15 +31,6 @@ QString update_profile(const QString& path,
     return {};
 }
 
-void apply_ir_fit(lessons::RobotProfile& profile, const SharpIrCurve& fitted) {
-    profile.ir_curve.a = fitted.a;
-    profile.ir_curve.c_m = fitted.c_m;
-    profile.ir_curve.c_r = fitted.c_r;
-    profile.ir_curve.b = fitted.b;
-    // The dialog fits one curve for both sensors: it replaces their own curves, if any.
-    profile.ir_sensor_parameters = {};
-}
-
 void apply_umbmark(lessons::RobotProfile& profile, const lessons::UmbmarkResult& result) {
     profile.right_wheel_diameter = result.right_wheel_diameter;
     profile.left_wheel_diameter = result.left_wheel_diameter;

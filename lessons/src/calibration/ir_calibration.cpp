@@ -237,6 +237,54 @@ std::vector<IrCalibrationPoint> points_of(std::span<const IrCalibrationPoint> po
     return taken;
 }
 
+namespace {
+
+// The fit names points by number: say which source (and which sensor's points) they are in.
+IrFit fit_named(std::span<const IrCalibrationPoint> points, const SharpIrCurve& start,
+                const std::string& source) {
+    try {
+        return fit_ir_curve(points, start);
+    } catch (const InputError& error) {
+        std::vector<InputProblem> problems = error.problems();
+        for (InputProblem& problem : problems) {
+            problem.source = problem.source.empty() ? source : problem.source;
+        }
+        throw InputError(std::move(problems));
+    }
+}
+
+}  // namespace
+
+std::string sensor_points_source(const std::string& source, IrSensor sensor) {
+    const std::string whose =
+        sensor == kFrontSensor ? "front sensor's points" : "rear sensor's points";
+    return source.empty() ? whose : source + " (" + whose + ")";
+}
+
+IrCalibration fit_ir_calibration(std::span<const IrCalibrationPoint> points,
+                                 const SharpIrCurve& start, const std::string& source) {
+    IrCalibration calibration;
+    calibration.both = fit_named(points, start, source);
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        const std::vector<IrCalibrationPoint> own = points_of(points, sensor);
+        if (!own.empty()) {
+            calibration.own[static_cast<std::size_t>(sensor)] =
+                fit_named(own, start, sensor_points_source(source, sensor));
+        }
+    }
+    return calibration;
+}
+
+void apply_ir_calibration(RobotProfile& profile, const IrCalibration& calibration) {
+    profile.ir_curve =
+        with_curve_parameters(profile.ir_curve, curve_parameters(calibration.both.curve));
+    for (const IrSensor sensor : {kFrontSensor, kRearSensor}) {
+        const auto& own = calibration.own[static_cast<std::size_t>(sensor)];
+        profile.ir_sensor_parameters[static_cast<std::size_t>(sensor)] =
+            own ? std::optional(curve_parameters(own->curve)) : std::nullopt;
+    }
+}
+
 std::vector<IrCalibrationPoint> read_ir_points_csv(const std::string& path) {
     return parse_ir_points_csv(read_text_file(path, kMeasurementsFile), path);
 }

@@ -5,6 +5,7 @@
 // when the fit is written in centimetres) and only rescales C_M and b. See docs/calibration.md.
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <span>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "legofeup/core/ir_geometry.hpp"
 #include "legofeup/core/sharp_ir.hpp"
+#include "legofeup/lessons/robot_profile.hpp"
 
 namespace legofeup::lessons {
 
@@ -51,6 +53,28 @@ Eigen::RowVector3d ir_curve_jacobian(double adc, const SharpIrCurve& curve);
 /// than 3 different A values (all identical included), or a start curve with A + C_R ≤ 0 at
 /// some point; the iteration never leaves the region where A + C_R > 0 at every point.
 IrFit fit_ir_curve(std::span<const IrCalibrationPoint> points, const SharpIrCurve& start);
+
+/// A calibration of the robot's two sensors from one set of points: the paper's one curve
+/// for both, fitted to every point, and each sensor's own curve, fitted to the points it took
+/// when they say which (real GP2D120s differ by up to ±10 % from unit to unit).
+struct IrCalibration {
+    IrFit both;
+    std::array<std::optional<IrFit>, kIrSensorCount> own;
+};
+
+/// How a sensor's points are named in messages: "ir.csv (front sensor's points)", or
+/// "front sensor's points" when `source` is empty (a table typed in the GUI).
+std::string sensor_points_source(const std::string& source, IrSensor sensor);
+
+/// Fits both curves as fit_ir_curve does; a problem with one sensor's points is named after
+/// `source` and that sensor (sensor_points_source), one with all of them after `source`.
+IrCalibration fit_ir_calibration(std::span<const IrCalibrationPoint> points,
+                                 const SharpIrCurve& start, const std::string& source);
+
+/// The calibration into a profile: eq. 2's parameters of the one curve into ir_curve (its
+/// ranges stay), and each sensor's own parameters where it has them; a sensor without its own
+/// points loses any own curve it had, so the profile never mixes two calibrations.
+void apply_ir_calibration(RobotProfile& profile, const IrCalibration& calibration);
 
 /// Reads measurements from a CSV file: the header `adc,distance_m`, then one `A,D` pair a
 /// line (D in metres), or the header `adc,distance_m,sensor` and `A,D,front` or `A,D,rear`

@@ -19,10 +19,6 @@ namespace legofeup::ui {
 QString update_profile(const QString& path,
                        const std::function<void(lessons::RobotProfile&)>& change);
 
-/// The fitted eq. 2 constants a, C_M, C_R and b into the profile as both sensors' one curve
-/// (its ranges stay; any curve of one sensor's own is removed).
-void apply_ir_fit(lessons::RobotProfile& profile, const SharpIrCurve& fitted);
-
 /// UMBmark's corrected wheel diameters and wheel base into the profile, with the Codo
 /// derived from them.
 void apply_umbmark(lessons::RobotProfile& profile, const lessons::UmbmarkResult& result);
