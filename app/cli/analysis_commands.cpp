@@ -89,11 +89,11 @@ void print_monte_carlo(const BatchHeader& header, const MonteCarloSummary& s, co
     // (docs/experiments.md), not from the bounds of one step's average over the runs.
     const ChiSquareInterval& average = s.time_average_nees_bounds;
     std::printf(
-        "  mean NEES %.2f (a consistent filter's lies in [%.2f, %.2f] at 95%%); each run's mean "
-        "NEES inside its own bounds in %.0f%% of the runs; the NEES averaged over the runs inside "
-        "its bounds at %.0f%% of the steps\n",
-        s.mean_nees, average.lower, average.upper, 100.0 * s.runs_nees_inside_time_average_fraction,
-        100.0 * s.nees_inside_fraction);
+        "  mean NEES %.2f (a consistent filter's lies in [%.2f, %.2f] at 95%%, the runs' "
+        "dispersion %.2f taken in); each run's mean NEES inside its own bounds in %.0f%% of the "
+        "runs; the NEES averaged over the runs inside its bounds at %.0f%% of the steps\n",
+        s.mean_nees, average.lower, average.upper, s.nees_dispersion,
+        100.0 * s.runs_nees_inside_time_average_fraction, 100.0 * s.nees_inside_fraction);
     std::printf(
         "  mean NIS %.2f (2 if consistent); averaged NIS inside its bounds at %.0f%% of "
         "the steps with updates\n",

@@ -1,6 +1,7 @@
 #include "legofeup/core/effective_samples.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -67,6 +68,38 @@ double pooled_effective_samples(std::span<const double> weights,
         variance_sum += weights[i] * weights[i] / effective_samples[i];
     }
     return variance_sum > 0.0 ? weight_sum * weight_sum / variance_sum : 0.0;
+}
+
+double nees_dispersion(std::span<const double> averages, std::span<const double> effective_samples,
+                       int dof) {
+    if (averages.size() != effective_samples.size()) {
+        throw std::invalid_argument("nees_dispersion: one effective sample count per average");
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (averages.size() < 2) {
+        return nan;
+    }
+    double sum = 0.0;
+    for (const double m : averages) {
+        sum += m;
+    }
+    const double mean = sum / static_cast<double>(averages.size());
+    if (!(mean > 0.0)) {
+        return nan;
+    }
+    double pearson = 0.0;  // Σ (mᵢ/m̄ − 1)² / (2 / (n·N_i))
+    for (std::size_t i = 0; i < averages.size(); ++i) {
+        if (!(effective_samples[i] > 0.0)) {
+            return nan;
+        }
+        const double deviation = averages[i] / mean - 1.0;
+        pearson += deviation * deviation * static_cast<double>(dof) * effective_samples[i] / 2.0;
+    }
+    return pearson / static_cast<double>(averages.size() - 1);
+}
+
+double dispersion_corrected_samples(double pooled_effective_samples, double dispersion) {
+    return dispersion > 1.0 ? pooled_effective_samples / dispersion : pooled_effective_samples;
 }
 
 }  // namespace legofeup

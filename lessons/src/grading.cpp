@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -71,25 +73,45 @@ constexpr TimeAverageBounds kTimeAverageNeesBounds[] = {
     {"time_average_nees_99_9_bounds", 0.999},
 };
 constexpr const char* kNeesEffectiveSamples = "nees_effective_samples";
+constexpr const char* kMeanNees = "mean_nees";
+constexpr const char* kNeesDispersion = "nees_dispersion";
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
-/// The 95 % interval of the mean over the seeds of the per-seed mean NEES, for a consistent
-/// filter. Seed i's time average is worth N_i independent χ²(3) values (its
-/// nees_effective_samples); the seeds are independent, and the mean weighs them equally, so
-/// it is worth N = S² / Σ 1/N_i (pooled_effective_samples) and its interval is
-/// χ²(3N)/N — far narrower than one seed's. Null when a seed has no effective samples (no
-/// truth).
-nlohmann::json pooled_time_average_bounds(const nlohmann::json& per_seed, double confidence) {
+/// Each seed's mean NEES and the effective samples it is worth; nullopt when a seed has
+/// either missing (no truth).
+struct SeedAverages {
+    std::vector<double> averages;
     std::vector<double> effective;
+};
+
+std::optional<SeedAverages> seed_averages(const nlohmann::json& per_seed) {
+    SeedAverages seeds;
     for (const nlohmann::json& seed : per_seed) {
         const nlohmann::json& metrics = seed["metrics"];
-        if (!metrics.contains(kNeesEffectiveSamples)
-            || !metrics[kNeesEffectiveSamples].is_number()) {
-            return nullptr;
+        for (const char* name : {kNeesEffectiveSamples, kMeanNees}) {
+            if (!metrics.contains(name) || !metrics[name].is_number()) {
+                return std::nullopt;
+            }
         }
-        effective.push_back(metrics[kNeesEffectiveSamples].get<double>());
+        seeds.effective.push_back(metrics[kNeesEffectiveSamples].get<double>());
+        seeds.averages.push_back(metrics[kMeanNees].get<double>());
     }
-    const std::vector<double> equal_weights(effective.size(), 1.0);
-    const double pooled = pooled_effective_samples(equal_weights, effective);
+    return seeds;
+}
+
+/// The interval, at `confidence`, of the mean over the seeds of the per-seed mean NEES, for a
+/// consistent filter. Seed i's time average is worth N_i independent χ²(3) values (its
+/// nees_effective_samples); the seeds are independent, and the mean weighs them equally, so
+/// it is worth N = S² / Σ 1/N_i (pooled_effective_samples) and its interval is
+/// χ²(3N)/N — far narrower than one seed's. Seeds differ more than their N_i say (each
+/// robot's own systematic errors repeat lap after lap): N is divided by the averages'
+/// dispersion φ when φ > 1 (nees_dispersion), which widens the interval by about √φ without
+/// excusing a filter whose NEES is off by a factor. Null without truth.
+nlohmann::json pooled_time_average_bounds(const SeedAverages& seeds, double confidence) {
+    const std::vector<double> equal_weights(seeds.effective.size(), 1.0);
+    const double pooled =
+        dispersion_corrected_samples(pooled_effective_samples(equal_weights, seeds.effective),
+                                     nees_dispersion(seeds.averages, seeds.effective, kStateSize));
     if (!(pooled > 0.0)) {
         return nullptr;
     }
@@ -172,10 +194,17 @@ nlohmann::json grade_submission(const Lesson& lesson, const Submission& submissi
                 means[name] = value;
             }
         }
+        const std::optional<SeedAverages> averages = seed_averages(per_seed);
         for (const TimeAverageBounds& bounds : kTimeAverageNeesBounds) {
-            means[bounds.name] = pooled_time_average_bounds(per_seed, bounds.confidence);
+            means[bounds.name] =
+                averages ? pooled_time_average_bounds(*averages, bounds.confidence) : nullptr;
             aggregate[bounds.name] = means[bounds.name];
         }
+        // φ, reported beside the bounds it widened (null without truth or with one seed).
+        const double dispersion =
+            averages ? nees_dispersion(averages->averages, averages->effective, kStateSize) : kNan;
+        aggregate[kNeesDispersion] =
+            std::isfinite(dispersion) ? nlohmann::json(dispersion) : nlohmann::json(nullptr);
     }
     nlohmann::json checks = nlohmann::json::array();
     bool passed = true;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "binomial_interval.hpp"
@@ -184,6 +185,86 @@ TEST(EffectiveSamples, PooledBoundsCoverTheMeanOverSeedsOfTimeAverages) {
     const testing::CountInterval expected = testing::binomial_interval(groups, 0.95, 0.999);
     EXPECT_GE(inside, expected.lower) << inside << " of " << groups;
     EXPECT_LE(inside, expected.upper) << inside << " of " << groups;
+}
+
+TEST(NeesDispersion, HandWorkedAndItsEdgeCases) {
+    // m = (2, 4), N = (10, 10), n = 3: m̄ = 3, (mᵢ/m̄ − 1)² = 1/9 each, times n·N/2 = 15:
+    // Σ = 10/3 over S − 1 = 1.
+    EXPECT_NEAR(nees_dispersion(std::vector<double>{2.0, 4.0}, std::vector<double>{10.0, 10.0}, 3),
+                10.0 / 3.0, 1e-12);
+    // Each term weighs its own N: (1/9)·(3·10/2) + (1/9)·(3·40/2) = 75/9.
+    EXPECT_NEAR(nees_dispersion(std::vector<double>{2.0, 4.0}, std::vector<double>{10.0, 40.0}, 3),
+                75.0 / 9.0, 1e-12);
+    // Scaled averages (a filter off by a factor) scatter alike in relative terms.
+    EXPECT_NEAR(
+        nees_dispersion(std::vector<double>{20.0, 40.0}, std::vector<double>{10.0, 10.0}, 3),
+        10.0 / 3.0, 1e-12);
+    EXPECT_TRUE(std::isnan(nees_dispersion(std::vector<double>{3.0}, std::vector<double>{9.0}, 3)));
+    EXPECT_TRUE(std::isnan(
+        nees_dispersion(std::vector<double>{3.0, 3.0}, std::vector<double>{9.0, 0.0}, 3)));
+    EXPECT_THROW(nees_dispersion(std::vector<double>{3.0, 3.0}, std::vector<double>{9.0}, 3),
+                 std::invalid_argument);
+    EXPECT_EQ(dispersion_corrected_samples(1000.0, 2.0), 500.0);
+    EXPECT_EQ(dispersion_corrected_samples(1000.0, 0.7), 1000.0);  // never narrower
+    EXPECT_EQ(dispersion_corrected_samples(1000.0, std::nan("")), 1000.0);
+}
+
+// Groups of 20 seeds of correlated NEES, as grading sees them, (a) from a consistent filter,
+// (b) from one whose seeds differ more than their autocorrelation says (each seed's NEES
+// scaled by its own factor, relative spread 10 %: a robot's own systematic errors), (c) from
+// an overconfident one (NEES × 1.2) with that spread. The corrected interval keeps its
+// coverage in (a), about 0.95 and not much more, restores it in (b), where the χ² model's
+// alone falls short, and still refuses (c).
+TEST(NeesDispersion, CorrectedBoundsCoverSeedsThatDifferAndStillRefuseAnOverconfidentFilter) {
+    struct Coverage {
+        int model = 0;
+        int corrected = 0;
+        double mean_dispersion = 0.0;
+    };
+    const auto coverage_of = [](double spread, double factor, std::uint64_t seed) {
+        std::mt19937_64 rng(seed);
+        std::lognormal_distribution<double> own(0.0, spread);
+        constexpr int groups = 300;
+        constexpr int seeds = 20;
+        Coverage counted;
+        for (int group = 0; group < groups; ++group) {
+            std::vector<double> means;
+            std::vector<double> effective;
+            for (int s = 0; s < seeds; ++s) {
+                std::vector<double> nees =
+                    correlated_nees(0.9, static_cast<std::size_t>(600 + 40 * s), rng);
+                const double scale = factor * (spread > 0.0 ? own(rng) : 1.0);
+                for (double& value : nees) {
+                    value *= scale;
+                }
+                means.push_back(mean_of(nees));
+                effective.push_back(effective_sample_size(nees).count);
+            }
+            const double pooled =
+                pooled_effective_samples(std::vector<double>(seeds, 1.0), effective);
+            const double dispersion = nees_dispersion(means, effective, 3);
+            counted.mean_dispersion += dispersion / groups;
+            const double mean = mean_of(means);
+            counted.model += time_average_chi_square_interval(3, pooled).contains(mean) ? 1 : 0;
+            counted.corrected += time_average_chi_square_interval(
+                                     3, dispersion_corrected_samples(pooled, dispersion))
+                                         .contains(mean)
+                                     ? 1
+                                     : 0;
+        }
+        return counted;
+    };
+    const testing::CountInterval expected = testing::binomial_interval(300, 0.95, 0.999);
+    const Coverage consistent = coverage_of(0.0, 1.0, 811);
+    EXPECT_NEAR(consistent.mean_dispersion, 1.0, 0.15);
+    EXPECT_GE(consistent.corrected, expected.lower);
+    EXPECT_LE(consistent.corrected, 299);  // wider only when the seeds say so
+    const Coverage differing = coverage_of(0.10, 1.0, 812);
+    EXPECT_GT(differing.mean_dispersion, 1.5);
+    EXPECT_LT(differing.model, expected.lower) << "the premise: the χ² model alone falls short";
+    EXPECT_GE(differing.corrected, expected.lower);
+    const Coverage overconfident = coverage_of(0.10, 1.2, 813);
+    EXPECT_LT(overconfident.corrected, 15) << "of 300 groups";
 }
 
 }  // namespace

@@ -3,10 +3,14 @@
 // grading passes the reference tuning of step f on unseen seeds and fails the bad ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
+#include "legofeup/core/chi_square.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/grading.hpp"
 #include "legofeup/lessons/lesson.hpp"
@@ -170,6 +174,31 @@ TEST(LegoFeupLesson, ConsistencyCheckTellsTheReferenceFromPessimisticAndOverconf
     EXPECT_TRUE(check_named(reference, consistency)["passed"].get<bool>())
         << reference["summary"].get<std::string>();
     EXPECT_TRUE(reference["passed"].get<bool>()) << reference["summary"].get<std::string>();
+    // The bounds are χ²(3N)/N with N = 20² / Σ 1/N_i over the seeds, divided by the seeds'
+    // dispersion when above 1 — worked out here from the per-seed numbers.
+    std::vector<double> averages;
+    std::vector<double> effective;
+    for (const nlohmann::json& seed : reference["per_seed"]) {
+        averages.push_back(seed["metrics"]["mean_nees"].get<double>());
+        effective.push_back(seed["metrics"]["nees_effective_samples"].get<double>());
+    }
+    double inverse_sum = 0.0;
+    double mean = 0.0;
+    for (std::size_t i = 0; i < averages.size(); ++i) {
+        inverse_sum += 1.0 / effective[i];
+        mean += averages[i] / 20.0;
+    }
+    double pearson = 0.0;
+    for (std::size_t i = 0; i < averages.size(); ++i) {
+        pearson += std::pow(averages[i] / mean - 1.0, 2) * 1.5 * effective[i];
+    }
+    const double dispersion = pearson / 19.0;
+    EXPECT_NEAR(reference["aggregate"]["nees_dispersion"].get<double>(), dispersion, 1e-9);
+    const ChiSquareInterval expected =
+        time_average_chi_square_interval(3, 400.0 / inverse_sum / std::max(dispersion, 1.0), 0.999);
+    const nlohmann::json& bounds = reference["aggregate"]["time_average_nees_99_9_bounds"];
+    EXPECT_NEAR(bounds[0].get<double>(), expected.lower, 1e-9);
+    EXPECT_NEAR(bounds[1].get<double>(), expected.upper, 1e-9);
     for (const double k : {10.0, 1.0 / 3.0}) {
         const nlohmann::json grade = grade_of(submission_of(scaled_reference(k)), 20, first_seed);
         EXPECT_FALSE(check_named(grade, consistency)["passed"].get<bool>())

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <random>
 
@@ -183,7 +185,19 @@ TEST(MonteCarlo, BoundsAreCoresChiSquareIntervalsForTheRunsPresent) {
         EXPECT_EQ(run.time_average_nees_lower, own.lower);
         EXPECT_EQ(run.time_average_nees_upper, own.upper);
     }
-    const ChiSquareInterval pooled = time_average_chi_square_interval(3, steps * steps / variance);
+    // … divided by the runs' dispersion φ = Σ (mᵢ/m̄ − 1)² · 3·N_i/2 / (R − 1) when above 1.
+    double mean = 0.0;
+    for (const RunRecord& run : summary.runs) {
+        mean += run.mean_nees / static_cast<double>(summary.runs.size());
+    }
+    double pearson = 0.0;
+    for (const RunRecord& run : summary.runs) {
+        pearson += std::pow(run.mean_nees / mean - 1.0, 2) * 1.5 * run.nees_effective_samples;
+    }
+    const double dispersion = pearson / static_cast<double>(summary.runs.size() - 1);
+    EXPECT_NEAR(summary.nees_dispersion, dispersion, 1e-12);
+    const ChiSquareInterval pooled =
+        time_average_chi_square_interval(3, steps * steps / variance / std::max(dispersion, 1.0));
     EXPECT_NEAR(summary.time_average_nees_bounds.lower, pooled.lower, 1e-12);
     EXPECT_NEAR(summary.time_average_nees_bounds.upper, pooled.upper, 1e-12);
     // Far narrower than one step's χ²(3) interval, wider than that of all steps independent.

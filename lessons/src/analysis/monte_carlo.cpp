@@ -61,20 +61,25 @@ std::vector<double> column(const std::vector<RunRecord>& runs, double RunRecord:
 }
 
 // The pooled mean NEES weighs every step alike, so run i (Tᵢ steps, all with a truth in the
-// simulator) has weight Tᵢ: N = (Σ Tᵢ)² / Σ Tᵢ²/N_i (pooled_effective_samples).
+// simulator) has weight Tᵢ: N = (Σ Tᵢ)² / Σ Tᵢ²/N_i (pooled_effective_samples), divided by
+// the runs' dispersion φ when φ > 1 (nees_dispersion: runs differ more than their N_i say).
 void add_time_average_bounds(MonteCarloSummary& summary, const std::vector<RunRecord>& runs) {
     std::vector<double> weights;
     std::vector<double> effective;
+    std::vector<double> averages;
     std::size_t inside = 0;
     for (const RunRecord& run : runs) {
         weights.push_back(static_cast<double>(run.steps));
         effective.push_back(run.nees_effective_samples);
+        averages.push_back(run.mean_nees);
         inside += run.mean_nees >= run.time_average_nees_lower
                           && run.mean_nees <= run.time_average_nees_upper
                       ? 1U
                       : 0U;
     }
-    const double pooled = pooled_effective_samples(weights, effective);
+    summary.nees_dispersion = nees_dispersion(averages, effective, kStateSize);
+    const double pooled = dispersion_corrected_samples(pooled_effective_samples(weights, effective),
+                                                       summary.nees_dispersion);
     summary.time_average_nees_bounds =
         pooled > 0.0 ? time_average_chi_square_interval(kStateSize, pooled, 0.95)
                      : ChiSquareInterval{kNan, kNan};

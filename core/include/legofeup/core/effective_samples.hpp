@@ -39,4 +39,24 @@ inline constexpr std::size_t kMaxAutocorrelationLag = 20000;
 double pooled_effective_samples(std::span<const double> weights,
                                 std::span<const double> effective_samples);
 
+/// How much more independent time averages scatter about their mean than their effective
+/// samples predict: the Pearson dispersion statistic of quasi-likelihood (McCullagh & Nelder,
+/// Generalized Linear Models, §9.2). For a filter whose NEES is c·χ²(n), seed i's average mᵢ
+/// is c·χ²(n·N_i)/N_i, so mᵢ/c has variance 2/(n·N_i), and
+///   φ = 1/(S − 1) · Σᵢ (mᵢ/m̄ − 1)² · n·N_i / 2,   m̄ = Σ mᵢ / S,
+/// is about 1 when that model holds and larger when the averages scatter more — as they do
+/// when a seed's systematic errors (its robot's own wheels and sensors) repeat lap after lap,
+/// so that one seed's average is not the N_i independent samples its autocorrelation counts.
+/// Relative deviations make φ independent of c: an overconfident or a pessimistic filter is
+/// not excused by its own larger (or smaller) scatter. NaN for fewer than two averages, a
+/// mean that is not positive, or an N_i that is not positive.
+double nees_dispersion(std::span<const double> averages, std::span<const double> effective_samples,
+                       int dof);
+
+/// The pooled effective samples of a mean of time averages, deflated by their dispersion
+/// when it is above 1 (N / φ: the interval widens by √φ, about): what the interval of a mean
+/// over seeds must use when the seeds differ more than the model says. Below 1 it is not
+/// inflated, so the bounds are never narrower than the χ² model's.
+double dispersion_corrected_samples(double pooled_effective_samples, double dispersion);
+
 }  // namespace legofeup

@@ -152,8 +152,11 @@ struct MonteCarloSummary {
     double nis_inside_fraction = 0.0;
     /// The 95 % interval of mean_nees (an average over runs and time) for a consistent filter:
     /// χ²(3N)/N with N the runs' effective samples pooled with their steps as weights
-    /// (pooled_effective_samples).
+    /// (pooled_effective_samples), divided by nees_dispersion when that is above 1.
     ChiSquareInterval time_average_nees_bounds;
+    /// How much more the runs' mean NEES scatter than their effective samples predict
+    /// (legofeup::nees_dispersion; about 1 when they do not; NaN for one run).
+    double nees_dispersion = 0.0;
     /// Share of runs whose own mean NEES lies inside its own time-average bounds; about 0.95
     /// for a consistent filter.
     double runs_nees_inside_time_average_fraction = 0.0;
