@@ -6,13 +6,14 @@
 #include <filesystem>
 #include <iostream>
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
 #include "input_problems.hpp"
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/analysis/shard_file.hpp"
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/report/analysis_plots.hpp"
+#include "output_directory.hpp"
 #include "progress_bar.hpp"
 
 namespace legofeup::cli {
@@ -31,7 +32,7 @@ int jobs_of(const AnalysisOptions& options) {
 }
 
 void write_text(const fs::path& path, const std::string& text) {
-    AtomicFile file(path);
+    fileio::AtomicFile file(path);
     file.stream() << text;
     file.commit();
 }

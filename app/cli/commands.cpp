@@ -9,10 +9,10 @@
 #include <optional>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "input_problems.hpp"
 #include "legofeup/comms/link_error.hpp"
 #include "legofeup/core/angles.hpp"
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/input_error.hpp"
@@ -24,6 +24,7 @@
 #include "legofeup/lessons/udp_run.hpp"
 #include "legofeup/report/run_plots.hpp"
 #include "legofeup/version.hpp"
+#include "output_directory.hpp"
 #include "progress_bar.hpp"
 
 namespace legofeup::cli {
@@ -246,10 +247,7 @@ int run_command(const RunOptions& options) {
         return kExitOutputFailed;
     }
     try {
-        AtomicFile trace(out / "trace.csv");
-        if (!trace.good()) {
-            throw std::runtime_error("cannot write " + (out / "trace.csv").string());
-        }
+        fileio::AtomicFile trace(out / "trace.csv");  // throws if it cannot be created
         lessons::TraceCsvWriter writer(trace.stream(), run.loop);
         report::RunRecording recording;
         Observers observers;
@@ -290,7 +288,7 @@ int run_command(const RunOptions& options) {
             run_log->close();
         }
 
-        AtomicFile summary(out / "summary.json");
+        fileio::AtomicFile summary(out / "summary.json");
         nlohmann::json summary_json = lessons::run_summary(run, result, options.experiment, title);
         summary_json["link"] = nxt ? nxt_to_json(link, *nxt) : link_to_json(link, report);
         const bool interrupted = nxt && !nxt->interrupted.empty();

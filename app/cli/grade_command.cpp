@@ -7,9 +7,9 @@
 #include <iostream>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
 #include "input_problems.hpp"
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/grading.hpp"
 #include "progress_bar.hpp"
 
@@ -120,7 +120,7 @@ int grade_one(const GradeOptions& options, const lessons::Lesson& lesson) {
         return kExitOk;
     }
     try {
-        AtomicFile file(options.out);
+        fileio::AtomicFile file(options.out);
         file.stream() << text;
         file.commit();
     } catch (const std::exception& error) {
@@ -146,7 +146,7 @@ std::vector<fs::path> submission_files(const fs::path& folder) {
 
 void write_details(const fs::path& folder, const fs::path& submission,
                    const nlohmann::json& grade) {
-    AtomicFile file(folder / (submission.stem().string() + ".json"));
+    fileio::AtomicFile file(folder / (submission.stem().string() + ".json"));
     file.stream() << grade.dump(2) << '\n';
     file.commit();
 }
@@ -183,7 +183,7 @@ int grade_folder(const GradeOptions& options, const lessons::Lesson& lesson) {
         if (!options.details.empty()) {
             fs::create_directories(options.details);
         }
-        AtomicFile csv(options.out);
+        fileio::AtomicFile csv(options.out);
         csv.stream() << csv_header() << '\n';
         ProgressBar progress("grade");
         for (std::size_t i = 0; i < files.size(); ++i) {

@@ -3,9 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
 #include "input_problems.hpp"
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/calibration/simulated_ir_points.hpp"
 
 namespace legofeup::cli {
@@ -62,7 +62,7 @@ int measure_ir_command(const MeasureIrOptions& options) {
     const auto points =
         lessons::measure_simulated_ir_points(run.robot, seed, distances, options.readings);
     try {
-        AtomicFile file(options.out_file);
+        fileio::AtomicFile file(options.out_file);
         write_points(file.stream(), points, title, seed, run.robot.ir_model, options.readings);
         file.commit();
     } catch (const std::exception& error) {

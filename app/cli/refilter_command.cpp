@@ -9,10 +9,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
 #include "input_problems.hpp"
 #include "legofeup/core/angles.hpp"
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/recording/refilter.hpp"
@@ -53,7 +53,7 @@ std::string number(double x) {
 }
 
 void write_csv(const RefilterResult& result, const fs::path& path) {
-    AtomicFile file(path);
+    fileio::AtomicFile file(path);
     std::ostream& out = file.stream();
     out << "t,frame_missing,x_true,y_true,th_true,"
            "x_old,y_old,th_old,sx_old,sy_old,sth_old,"
@@ -177,7 +177,7 @@ std::vector<std::string> write_outputs(const RefilterOptions& options, const Run
     const fs::path out(options.out_directory);
     fs::create_directories(out);
     write_csv(result, out / "refilter.csv");
-    AtomicFile summary(out / "summary.json");
+    fileio::AtomicFile summary(out / "summary.json");
     summary.stream() << summary_json(options, log, result, changes).dump(2) << '\n';
     summary.commit();
     if (!options.plots) {

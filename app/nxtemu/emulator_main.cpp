@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/input_error.hpp"
@@ -87,17 +87,9 @@ std::optional<nxtemu::EmulatorOptions> emulator_options(const EmulatorCommand& c
     return options;
 }
 
-/// Written whole under a temporary name, then renamed: a reader never sees half a file.
+/// Written atomically: a reader polling for the file never sees half of it.
 void write_ready_file(const std::string& path, const nlohmann::json& ready) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary);
-        out << ready.dump(2) << '\n';
-        if (!out) {
-            throw std::runtime_error("cannot write " + temporary);
-        }
-    }
-    fs::rename(temporary, path);
+    fileio::write_file_atomically(path, ready.dump(2) + '\n');
 }
 
 /// Waits for SIGINT or SIGTERM (blocked in every thread, so only this wait takes them), or

@@ -7,11 +7,11 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <system_error>
 
 #include "legofeup/comms/endpoint.hpp"
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/world_file.hpp"
 #include "legofeup/simserver/sim_server.hpp"
@@ -108,11 +108,16 @@ int run_server(const ServerCommand& command) {
     }
     const simserver::BoundPorts ports = server->ports();
     if (!command.ready_file.empty()) {
-        // Written whole to a temporary name, then renamed: a reader never sees half a file.
-        const std::string temporary = command.ready_file + ".tmp";
-        std::ofstream(temporary) << "robot=" << ports.robot << "\ntruth=" << ports.truth
-                                 << "\ncontrol=" << ports.control << '\n';
-        std::rename(temporary.c_str(), command.ready_file.c_str());
+        // Written atomically: a reader polling for the file never sees half of it.
+        try {
+            fileio::write_file_atomically(
+                command.ready_file, "robot=" + std::to_string(ports.robot)
+                                        + "\ntruth=" + std::to_string(ports.truth)
+                                        + "\ncontrol=" + std::to_string(ports.control) + '\n');
+        } catch (const fileio::WriteError& error) {
+            std::cerr << "legofeup-sim: --ready-file: " << error.what() << '\n';
+            return 1;
+        }
     }
     if (!command.quiet) {
         const comms::ServerStatus status = server->status();

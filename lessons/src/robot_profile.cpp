@@ -4,8 +4,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -14,6 +12,7 @@
 #include "config_reader.hpp"
 #include "legofeup/core/angles.hpp"
 #include "legofeup/core/config_issue.hpp"
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/run_config.hpp"
 #include "text_file.hpp"
@@ -471,24 +470,7 @@ void save_robot_profile(const std::string& path, const RobotProfile& profile) {
         }
         throw InputError(std::move(problems));
     }
-    const std::string partial = path + ".partial";
-    {
-        std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-        out << robot_profile_to_toml(profile);
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(partial, ignored);
-            throw std::runtime_error("cannot write " + partial);
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(partial, path, error);
-    if (error) {
-        const std::string reason = error.message();
-        std::filesystem::remove(partial, error);
-        throw std::runtime_error("cannot replace " + path + ": " + reason);
-    }
+    fileio::write_file_atomically(path, robot_profile_to_toml(profile));
 }
 
 void apply_robot_profile(const RobotProfile& profile, LoopConfig& config) {

@@ -8,7 +8,11 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <ostream>
 #include <stdexcept>
+
+#include "cairo_stream.hpp"
+#include "legofeup/fileio/atomic_file.hpp"
 
 namespace legofeup::plot {
 namespace {
@@ -577,27 +581,34 @@ void Figure::write(const std::string& base) const {
     using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
     using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
 
-    const std::string png = base + ".png";
+    // Both files are written whole through AtomicFiles and renamed once both are complete.
+    fileio::AtomicFile png(base + ".png");
     SurfacePtr image(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width_, height_),
                      cairo_surface_destroy);
     {
         ContextPtr cr(cairo_create(image.get()), cairo_destroy);
         draw(cr.get());
-        check(cairo_status(cr.get()), png);
+        check(cairo_status(cr.get()), png.path().string());
     }
-    check(cairo_surface_write_to_png(image.get(), png.c_str()), png);
+    std::ostream* png_out = &png.stream();
+    check(cairo_surface_write_to_png_stream(image.get(), report::write_to_stream, png_out),
+          png.path().string());
 
-    const std::string svg = base + ".svg";
-    SurfacePtr vector(cairo_svg_surface_create(svg.c_str(), width_, height_),
-                      cairo_surface_destroy);
-    check(cairo_surface_status(vector.get()), svg);
+    fileio::AtomicFile svg(base + ".svg");
+    std::ostream* svg_out = &svg.stream();
+    SurfacePtr vector(
+        cairo_svg_surface_create_for_stream(report::write_to_stream, svg_out, width_, height_),
+        cairo_surface_destroy);
+    check(cairo_surface_status(vector.get()), svg.path().string());
     {
         ContextPtr cr(cairo_create(vector.get()), cairo_destroy);
         draw(cr.get());
-        check(cairo_status(cr.get()), svg);
+        check(cairo_status(cr.get()), svg.path().string());
     }
     cairo_surface_finish(vector.get());
-    check(cairo_surface_status(vector.get()), svg);
+    check(cairo_surface_status(vector.get()), svg.path().string());
+    png.commit();
+    svg.commit();
 }
 
 std::string Figure::svg() const {

@@ -3,8 +3,11 @@
 #include <cairo-pdf.h>
 
 #include <memory>
+#include <ostream>
 #include <stdexcept>
+#include <utility>
 
+#include "cairo_stream.hpp"
 #include "markdown.hpp"
 #include "report_content.hpp"
 
@@ -144,12 +147,14 @@ void front_page(PageLayout& layout, const StudentReport& report) {
     layout.table({{"Step", 0.1}, {"Title", 0.6}, {"Checks", 0.3}}, rows);
 }
 
-// A PDF file: one surface, a page per begin/end.
+// A PDF written to a stream (an AtomicFile's): one surface, a page per begin/end.
 class PdfSink final : public pages::PageSink {
   public:
-    explicit PdfSink(const std::filesystem::path& path)
-        : path_(path),
-          surface_(cairo_pdf_surface_create(path.c_str(), pages::kPageWidth, pages::kPageHeight),
+    PdfSink(std::ostream& out, std::filesystem::path shown_path)
+        : out_(out),
+          path_(std::move(shown_path)),
+          surface_(cairo_pdf_surface_create_for_stream(write_to_stream, &out_, pages::kPageWidth,
+                                                       pages::kPageHeight),
                    cairo_surface_destroy),
           cr_(cairo_create(surface_.get()), cairo_destroy) {
         check();
@@ -177,6 +182,7 @@ class PdfSink final : public pages::PageSink {
         }
     }
 
+    std::ostream& out_;
     std::filesystem::path path_;
     std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface_;
     std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr_;
@@ -194,8 +200,9 @@ int draw_report_pages(const StudentReport& report, pages::PageSink& sink) {
     return layout.finish();
 }
 
-void write_report_pdf(const StudentReport& report, const std::filesystem::path& path) {
-    PdfSink sink(path);
+void write_report_pdf(const StudentReport& report, std::ostream& out,
+                      const std::filesystem::path& shown_path) {
+    PdfSink sink(out, shown_path);
     draw_report_pages(report, sink);
     sink.finish(report.lesson.title);
 }

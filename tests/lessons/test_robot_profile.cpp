@@ -7,6 +7,7 @@
 
 #include "calibration_test_support.hpp"
 #include "legofeup/comms/nxt/nxt_link.hpp"
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
 
 namespace {
@@ -276,7 +277,13 @@ TEST_F(RobotProfileFile, SavesAtomicallyAndNeverWritesAnInvalidProfile) {
     EXPECT_FALSE(fs::exists(path + ".partial"));
 
     const std::string nowhere = (dir_ / "no-such-directory" / "robot.toml").string();
-    EXPECT_THROW(save_robot_profile(nowhere, second), std::runtime_error);
+    try {
+        save_robot_profile(nowhere, second);
+        FAIL() << "no error";
+    } catch (const legofeup::fileio::WriteError& error) {  // the one atomic writer's error
+        EXPECT_EQ(error.step(), "creating " + nowhere + ".partial");
+        EXPECT_EQ(error.reason(), std::errc::no_such_file_or_directory);
+    }
     EXPECT_FALSE(fs::exists(dir_ / "no-such-directory"));
 }
 

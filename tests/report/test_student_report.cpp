@@ -10,6 +10,7 @@
 #include <regex>
 #include <sstream>
 
+#include "legofeup/fileio/atomic_file.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/report/student_report.hpp"
 #include "report_content.hpp"
@@ -248,6 +249,24 @@ TEST(StudentReport, FailedWriteThrowsAndLeavesNoFile) {
     EXPECT_FALSE(fs::exists(dir / "report.html"));
     EXPECT_FALSE(fs::exists(dir / "report.html.partial"));
     EXPECT_FALSE(fs::exists(dir / "report.pdf"));
+}
+
+TEST(StudentReport, NeitherFileIsReplacedBeforeBothAreComplete) {
+    const fs::path dir = fresh_directory("atomic_rename");
+    // report.html's name is taken by a directory that is not empty: its rename fails, after
+    // both files were written, and the PDF is not renamed either.
+    fs::create_directories(dir / "report.html" / "occupied");
+    try {
+        write_report(sample_report(), dir);
+        FAIL() << "no error";
+    } catch (const fileio::WriteError& error) {
+        EXPECT_EQ(error.path(), dir / "report.html");
+        EXPECT_EQ(error.step(), "renaming " + (dir / "report.html.partial").string() + " over it");
+    }
+    EXPECT_TRUE(fs::is_directory(dir / "report.html" / "occupied"));
+    EXPECT_FALSE(fs::exists(dir / "report.pdf"));
+    EXPECT_FALSE(fs::exists(dir / "report.html.partial"));
+    EXPECT_FALSE(fs::exists(dir / "report.pdf.partial"));
 }
 
 TEST(StudentReport, UncreatableDirectoryThrowsNamingIt) {

@@ -64,7 +64,7 @@ bool show_initial_step(LessonPanel& panel, const StartOptions& options) {
         return panel.showStepOfConfiguration(
             options.config.isEmpty() ? preferences::kExperiment.read() : QString());
     }
-    // "<lesson>:<step>", or a … f of the LegoFeup lesson.
+    // "<lesson>:<step>", or a … h of the LegoFeup lesson.
     const qsizetype colon = options.experiment.indexOf(QLatin1Char(':'));
     panel.useBuiltInLesson(colon > 0 ? options.experiment.left(colon)
                                      : QString::fromStdString(lessons::legofeup_lesson().id));

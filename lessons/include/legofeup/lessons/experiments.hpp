@@ -1,5 +1,5 @@
 #pragma once
-// The guided experiments a–f: the steps of the built-in LegoFeup lesson
+// The guided experiments a–h: the steps of the built-in LegoFeup lesson
 // (resources/lessons/legofeup.toml, lesson.hpp), seen as what the programs run. Each one is a
 // title, instructions, the expected conclusion, and a configuration.
 
@@ -12,7 +12,7 @@
 namespace legofeup::lessons {
 
 struct Experiment {
-    std::string id;  ///< "a" … "f"
+    std::string id;  ///< "a" … "h"
     std::string title;
     std::string instructions;
     std::string expectation;  ///< the conclusion the run should lead to
@@ -22,8 +22,7 @@ struct Experiment {
 /// The experiments of the LegoFeup lesson, in order (parsed once).
 const std::vector<Experiment>& legofeup_experiments();
 
-/// The experiment with this id, or nullptr.
-/// The LegoFeup steps ("a" … "f") and every other built-in lesson's steps as
+/// The LegoFeup steps ("a" … "h") and every other built-in lesson's steps as
 /// "<lesson>:<step>" ("beacons:a", "compass:c", …): what --experiment accepts.
 const std::vector<Experiment>& all_experiments();
 

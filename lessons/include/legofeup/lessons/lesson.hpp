@@ -95,13 +95,13 @@ Lesson parse_lesson(std::string_view text, const std::string& source,
 /// Reads and parses a lesson file.
 Lesson load_lesson_file(const std::filesystem::path& path);
 
-/// The built-in LegoFeup lesson (resources/lessons/legofeup.toml, steps a–f), parsed once.
+/// The built-in LegoFeup lesson (resources/lessons/legofeup.toml, steps a–h), parsed once.
 const Lesson& legofeup_lesson();
 
 /// The lessons that ship with the program, in the order menus list them (an explicit list:
 /// no self-registration).
 struct BuiltInLesson {
-    std::string id;  ///< "legofeup", "beacons", "speeds", "compass"
+    std::string id;  ///< "legofeup", "beacons", "speeds", "compass", "laser"
     std::string title;
     std::string resource_path;  ///< where it lives in the source tree, for the record
 };

@@ -1,7 +1,7 @@
 #pragma once
 // Runs the loop against any link — the in-process simulator, a simulator server over UDP,
-// later the NXT — until the routine is finished or the time limit. The loop sees frames
-// only; ground truth comes from a separate source, for metrics and plots.
+// an NXT brick (comms::NxtLink) — until the routine is finished or the time limit. The loop sees
+// frames only; ground truth comes from a separate source, for metrics and plots.
 //
 // Over a real link frames can be lost, duplicated or late. The link hands over each frame
 // once, in order; for every control period without a frame this runner makes the loop

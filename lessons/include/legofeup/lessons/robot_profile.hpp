@@ -69,9 +69,10 @@ RobotProfile parse_robot_profile(std::string_view text, const std::string& sourc
 /// each field with a comment saying what it is.
 std::string robot_profile_to_toml(const RobotProfile& profile);
 
-/// Writes the profile to `path` atomically: `path`.partial first, then a rename, so an
-/// existing profile is never left half-written. Throws InputError if the profile is not
-/// valid, std::runtime_error if the file cannot be written.
+/// Writes the profile to `path` atomically (legofeup/fileio/atomic_file.hpp: `path`.partial
+/// first, then a rename), so an existing profile is never left half-written. Throws
+/// InputError if the profile is not valid, fileio::WriteError (a std::runtime_error) if the
+/// file cannot be written.
 void save_robot_profile(const std::string& path, const RobotProfile& profile);
 
 /// The robot's part of the loop: odometry (Codo, wheel base) and the IR curves. Nothing

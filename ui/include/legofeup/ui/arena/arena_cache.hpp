@@ -68,7 +68,6 @@ class ArenaCache {
     QRectF world_bounds() const {
         return scene_bounds_.empty() ? data_bounds_.rect() : scene_bounds_.rect();
     }
-    std::size_t samples_seen() const { return seen_; }
 
   private:
     void take_sample(const RunSample& sample, std::size_t index, EllipseConfidence level);

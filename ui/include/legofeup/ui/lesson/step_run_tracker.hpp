@@ -35,12 +35,8 @@ class StepRunTracker : public QObject {
 
     /// The lesson and its step the next run belongs to. A new lesson forgets the run going.
     void setStep(std::shared_ptr<const lessons::Lesson> lesson, const std::string& step_id);
-    /// The step the next run belongs to if its configuration is the step's; nullptr if none.
-    const lessons::LessonStep* selectedStep() const;
     /// The step whose live run is going; empty if none.
     const std::string& runningStep() const { return running_; }
-    /// The steps of the run going (or last finished) taken so far.
-    const ShownRun& shownRun() const { return shown_; }
 
   signals:
     void stepStarted(const QString& step_id);
@@ -50,6 +46,8 @@ class StepRunTracker : public QObject {
     void outcomeReady(const legofeup::report::StepOutcome& outcome);
 
   private:
+    /// The step the next run belongs to if its configuration is the step's; nullptr if none.
+    const lessons::LessonStep* selectedStep() const;
     void phaseChanged(RunPhase phase);
     void samplesAppended(int first, int count);
     void abandonRun();

@@ -30,7 +30,7 @@ StartConfig initial_config(const StartOptions& options);
 LinkChoice initial_link(const StartOptions& options);
 
 /// Shows the lesson and step the first run belongs to: --experiment's (its lesson, LegoFeup
-/// for a … f); else the step shown last if the configuration is its, else the step the
+/// for a … h); else the step shown last if the configuration is its, else the step the
 /// configuration came from (LessonPanel::showStepOfConfiguration); a configuration that is
 /// no step's is shown as the students' own. False in that last case.
 bool show_initial_step(LessonPanel& panel, const StartOptions& options);
