@@ -259,7 +259,8 @@ std::string config_to_toml(const RunConfig& config, std::string_view title) {
         }
         const bool set = !setting.is_set || setting.is_set(config);
         out << (set ? "" : "# ") << setting.name() << " = "
-            << format_setting_value(setting.get(config)) << "  # " << setting.help << "\n";
+            << format_setting_value(setting.get(config)) << "  # " << setting.file_comment()
+            << "\n";
     }
     return out.str();
 }

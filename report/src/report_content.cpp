@@ -69,7 +69,7 @@ std::vector<ParameterRow> parameter_rows(const lessons::RunConfig& config) {
             default_set ? lessons::format_setting_value(setting.get(defaults)) : "";
         if (always || (set && value != default_value)) {
             rows.push_back({setting.key, set ? value : "(default)",
-                            default_set ? default_value : "(world start)", setting.help});
+                            default_set ? default_value : "(world start)", setting.file_comment()});
         }
     }
     return rows;

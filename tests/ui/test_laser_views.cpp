@@ -621,8 +621,8 @@ class TestLaserViews : public QObject {
         QVERIFY(std::find(method->choices.begin(), method->choices.end(), "laser")
                 != method->choices.end());
         // The filter's laser tuning applies while running; the simulated scanner at the start.
-        QVERIFY(applies_live(*lessons::find_setting_by_key("laser.min_matched_points")));
-        QVERIFY(!applies_live(*lessons::find_setting_by_key("laser_scanner.enabled")));
+        QVERIFY(lessons::find_setting_by_key("laser.min_matched_points")->applies_live());
+        QVERIFY(!lessons::find_setting_by_key("laser_scanner.enabled")->applies_live());
     }
 };
 

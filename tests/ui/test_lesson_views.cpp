@@ -500,9 +500,9 @@ class TestLessonViews : public QObject {
         // wait for the next start.
         for (const char* key : {"filter.kind", "filter.compare_kinds", "localisation.method",
                                 "beacons.r_bearing", "compass.r_compass"}) {
-            QVERIFY2(applies_live(*lessons::find_setting_by_key(key)), key);
+            QVERIFY2(lessons::find_setting_by_key(key)->applies_live(), key);
         }
-        QVERIFY(!applies_live(*lessons::find_setting_by_key("beacon_scanner.enabled")));
+        QVERIFY(!lessons::find_setting_by_key("beacon_scanner.enabled")->applies_live());
 
         config.lesson.localisation = Localisation::Walls;
         QVERIFY(session.setConfig(config).isEmpty());

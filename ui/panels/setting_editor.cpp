@@ -2,6 +2,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QLineEdit>
 #include <QSignalBlocker>
@@ -20,6 +21,10 @@ constexpr int kSliderMaxDecade = 4;
 
 }  // namespace
 
+QString setting_text(const char* source) {
+    return QCoreApplication::translate(lessons::kSettingTextContext, source);
+}
+
 bool SettingEditor::isVariance(const lessons::Setting& setting) {
     const std::string name = setting.name();
     return setting.type == lessons::SettingType::Real
@@ -31,7 +36,7 @@ SettingEditor::SettingEditor(const lessons::Setting& setting, QWidget* parent)
     : QWidget(parent), setting_(setting) {
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    setToolTip(QString::fromStdString(setting.key + "\n" + setting.help));
+    setToolTip(QString::fromStdString(setting.key) + '\n' + setting_text(setting.help.c_str()));
     switch (setting.type) {
         case lessons::SettingType::Real:
             buildNumber(false);
@@ -57,7 +62,7 @@ SettingEditor::SettingEditor(const lessons::Setting& setting, QWidget* parent)
 void SettingEditor::buildNumber(bool integer) {
     auto* field = new QLineEdit(this);
     field->setObjectName(QString::fromStdString(setting_.key));
-    field->setAccessibleName(QString::fromStdString(setting_.help));
+    field->setAccessibleName(setting_text(setting_.help.c_str()));
     fields_ << field;
     if (isVariance(setting_)) {
         slider_ = new LogSlider(kSliderMinDecade, kSliderMaxDecade, this);

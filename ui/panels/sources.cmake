@@ -7,7 +7,6 @@ list(APPEND LEGOFEUP_UI_SOURCES
     panels/number_text.cpp
     panels/robot_status.cpp
     panels/setting_editor.cpp
-    panels/setting_relevance.cpp
     include/legofeup/ui/panels/config_panel.hpp  # Q_OBJECT: listed for AUTOMOC
     include/legofeup/ui/panels/covariance_view.hpp  # Q_OBJECT: listed for AUTOMOC
     include/legofeup/ui/panels/log_slider.hpp  # Q_OBJECT: listed for AUTOMOC

@@ -81,8 +81,7 @@ RefilterDialog::RefilterDialog(const Session& session, QWidget* parent) : QDialo
         auto* editor = new SettingEditor(*setting, settings);
         editor->setEnabled(false);
         editors_[key] = editor;
-        const std::string& help = setting->help;
-        form->addRow(QString::fromStdString(help.substr(0, help.find(':'))), editor);
+        form->addRow(setting_text(setting->label.text), editor);
         connect(editor, &SettingEditor::proposed, this,
                 [this, editor](const lessons::SettingValue& value, const QString& text) {
                     propose(*editor, value, text);

@@ -4,10 +4,8 @@
 #include <QDir>
 #include <QFileInfo>
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <sstream>
-#include <string_view>
 
 #include "legofeup/comms/endpoint.hpp"
 #include "legofeup/lessons/config_file.hpp"
@@ -36,11 +34,6 @@ QStringList problem_lines(const lessons::InputError& error) {
     return lines;
 }
 
-bool starts_with_any(const std::string& key, std::initializer_list<std::string_view> prefixes) {
-    return std::any_of(prefixes.begin(), prefixes.end(),
-                       [&](std::string_view prefix) { return key.starts_with(prefix); });
-}
-
 /// A sample's truth, or for a robot without one (a real NXT) the CLI's unknown truth: the
 /// trace's truth and NEES cells stay empty.
 GroundTruth truth_or_unknown(const RunSample& sample) {
@@ -51,30 +44,6 @@ GroundTruth truth_or_unknown(const RunSample& sample) {
 }
 
 }  // namespace
-
-bool applies_live(const lessons::Setting& setting) {
-    const std::string& key = setting.key;
-    // The routine's shape and the run's length, the world, the seed and the starting belief
-    // belong to a run's beginning; the simulated robot's body and timing to the simulator's.
-    if (starts_with_any(key,
-                        {"control.routine", "control.line_", "control.circle_", "control.goto_"})) {
-        return false;
-    }
-    if (starts_with_any(key, {"filter.", "control.", "robot.", "ir_curve.", "association."})) {
-        return true;
-    }
-    // The further lessons' estimators: the loop takes them at the next step (a new
-    // localisation continues from the current belief); their simulated sensors are the
-    // simulator's and wait for the next start.
-    if (starts_with_any(key, {"localisation.", "beacons.", "gyro_fusion.", "compass.", "laser.",
-                              "wheel_speed_kf.", "velocity_kf.", "calibration."})) {
-        return true;
-    }
-    static constexpr std::array kLiveNoise = {"simulator.wheel_diameter_ratio",
-                                              "simulator.wheel_base_ratio", "simulator.slip_noise",
-                                              "simulator.ir_noise"};
-    return std::find(kLiveNoise.begin(), kLiveNoise.end(), key) != kLiveNoise.end();
-}
 
 QString phase_text(RunPhase phase) {
     switch (phase) {

@@ -1,8 +1,14 @@
 #pragma once
-// The one list of every setting a run configuration has: its key in TOML files, the field
-// name validation uses, its meaning and unit, its type, and how to read and write it in a
-// RunConfig. Files are read and written, and summaries and the GUI list settings, from this
-// table, so a setting added here is available everywhere at once.
+// The one table of every setting a run configuration has, and every fact about each: its key
+// in TOML files, the field name validation uses, its type and how to read and write it in a
+// RunConfig, its label and help, the configuration panel's page it is on, whether it applies
+// while the robot runs, and which runs use it. Files are read and written, summaries list
+// settings, and the GUI builds its panel from this table, so a setting added here is
+// available everywhere at once (docs/configuration.md, "Adding a setting").
+//
+// Labels, help and page titles are English source texts for Qt's translation: the GUI shows
+// them through QCoreApplication::translate(kSettingTextContext, text), and lupdate collects
+// them from the table's markers (lessons/src/setting_builders.hpp). Qt-free.
 
 #include <cstdint>
 #include <functional>
@@ -18,10 +24,63 @@ using SettingValue = std::variant<double, std::int64_t, bool, std::string, Vecto
 
 enum class SettingType : std::uint8_t { Real, Integer, Boolean, Text, Point, Choice };
 
+/// The translation context of every text of the table (labels, help, page titles, the runs
+/// that use a setting): the namespace lupdate files the table's markers under.
+inline constexpr const char* kSettingTextContext = "legofeup::lessons";
+
+/// The configuration panel's pages, in the order students meet them: the filter's noise
+/// first, the simulator's errors next.
+enum class SettingPage : std::uint8_t {
+    Filter,
+    Localisation,
+    Laser,
+    InitialBelief,
+    Controller,
+    Simulator,
+    SimulatedSensors,
+    SimulatedLaser,
+    Robot,
+    Run,
+};
+
+/// Every page, in the panel's order.
+const std::vector<SettingPage>& setting_pages();
+
+/// A page's title (an English source text, see kSettingTextContext).
+const char* setting_page_title(SettingPage page);
+
+/// When a change made while the robot runs takes effect.
+enum class SettingApplies : std::uint8_t {
+    Live,       ///< at the loop's next step
+    NextStart,  ///< at the next start or reset (the routine's shape, the simulated robot, …)
+};
+
+/// Which runs use a setting; the configuration panel greys it in the others.
+struct SettingUse {
+    /// Whether a run of this configuration uses the setting.
+    bool (*used_by)(const RunConfig& config) = nullptr;
+    /// The runs that do, in words for a greyed row's tooltip ("the wall lesson (IR
+    /// sensors)"); "" for a setting every run uses.
+    const char* runs = "";
+};
+
+/// How a row is labelled: the paper's symbol ("Q11", "V_ref"), which files also write before
+/// the help, or the setting's name in words ("wall updates").
+struct SettingLabel {
+    const char* text = "";
+    bool is_symbol = false;
+};
+
 struct Setting {
-    std::string key;    ///< "section.name" as in TOML files, or "name" at the top level
-    std::string field;  ///< the name validate() uses for it ("motion.v_ref", …)
-    std::string help;   ///< meaning and unit, written as a comment in files
+    std::string key;     ///< "section.name" as in TOML files, or "name" at the top level
+    std::string field;   ///< the name validate() uses for it ("motion.v_ref", …)
+    SettingLabel label;  ///< the panel row's label
+    /// Meaning and unit, true of every value (a Boolean's help says what both states do):
+    /// shown under the row, and written as a comment in files (file_comment()).
+    std::string help;
+    SettingPage page = SettingPage::Run;
+    SettingApplies applies = SettingApplies::NextStart;
+    SettingUse use;
     SettingType type = SettingType::Real;
     std::vector<std::string> choices;  ///< allowed texts of a Choice
     std::function<SettingValue(const RunConfig&)> get;
@@ -36,6 +95,12 @@ struct Setting {
 
     std::string section() const;  ///< the part of key before the dot ("" at the top level)
     std::string name() const;     ///< the part after it
+    /// The comment files write after the value: "Q11: variance of …" for a symbol's setting,
+    /// the help alone for the others.
+    std::string file_comment() const;
+    bool applies_live() const { return applies == SettingApplies::Live; }
+    /// Whether a run of `config` uses this setting (SettingUse).
+    bool used_by(const RunConfig& config) const { return use.used_by(config); }
 };
 
 /// Every setting, in the order files list them.

@@ -1,14 +1,17 @@
 #pragma once
-// The configuration panel: every setting of a run (the one settings table the TOML files and
-// the CLI use), grouped as the lesson talks about them — Q and R first. Entries apply live
-// while the robot runs where the loop allows it (the others are marked "next start"); an entry
-// the session refuses is undone and the reason shown, never clamped.
+// The configuration panel: every setting of a run, built from the one settings table the TOML
+// files and the CLI use (lessons/config_schema.hpp): its pages, each row's label and help, the
+// rows a run does not use greyed, and the settings that wait for the next start marked so.
+// An entry the session refuses is undone and the reason shown, never clamped.
 
 #include <QWidget>
 #include <map>
 #include <string>
 
-#include "legofeup/core/lesson_filters_config.hpp"
+namespace legofeup::lessons {
+struct RunConfig;
+struct Setting;
+}  // namespace legofeup::lessons
 
 class QLabel;
 class QToolBox;
@@ -29,14 +32,14 @@ class ConfigPanel : public QWidget {
     /// The message last shown (what was applied, or why an entry was refused).
     QString message() const;
     bool messageIsError() const { return message_is_error_; }
-    /// Whether the setting's row is enabled: the current localisation uses it
-    /// (setting_relevance.hpp). False for an unknown key.
+    /// Whether the setting's row is enabled: the current configuration uses it
+    /// (Setting::used_by). False for an unknown key.
     bool isRelevant(const std::string& key) const;
 
   private:
     void refresh();
-    /// Greys the rows (and pages) of settings `localisation` does not use.
-    void showRelevance(Localisation localisation);
+    /// Greys the rows (and pages) of settings a run of `config` does not use.
+    void showRelevance(const lessons::RunConfig& config);
     void showMessage(const QString& text, bool error);
 
     Session& session_;
@@ -45,6 +48,7 @@ class ConfigPanel : public QWidget {
     QToolBox* pages_ = nullptr;
     std::map<std::string, SettingEditor*> editors_;
     struct Row {
+        const lessons::Setting* setting = nullptr;
         QWidget* label = nullptr;
         QWidget* field = nullptr;
         int page = 0;

@@ -13,6 +13,10 @@ namespace legofeup::ui {
 
 class LogSlider;
 
+/// A text of the settings table (a label, help, page title) in the user's language: the
+/// table's English is the source text, kSettingTextContext its context.
+QString setting_text(const char* source);
+
 class SettingEditor : public QWidget {
     Q_OBJECT
 

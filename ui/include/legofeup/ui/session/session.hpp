@@ -89,7 +89,8 @@ class Session : public QObject {
     /// problem, one per line; nothing changes unless the list is empty.
     QStringList setConfig(const lessons::RunConfig& config);
     /// Changes one setting (the configuration panel). Returns why it was refused, or an empty
-    /// string when it was applied — live if a run is going (see applies_live()).
+    /// string when it was applied — live if a run is going and the setting applies live
+    /// (lessons::Setting::applies_live()).
     QString changeSetting(const lessons::Setting& setting, const lessons::SettingValue& value);
     /// Takes effect at the next start.
     void setLinkChoice(const LinkChoice& choice);
@@ -188,9 +189,6 @@ class Session : public QObject {
     std::unique_ptr<lessons::RunLogWriter> run_log_;
     QString recording_file_;
 };
-
-/// Whether a setting takes effect while the robot runs (else at the next start or reset).
-bool applies_live(const lessons::Setting& setting);
 
 /// A phase as the status bar words it.
 QString phase_text(RunPhase phase);
