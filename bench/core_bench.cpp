@@ -1,14 +1,39 @@
 // Benchmarks of the LegoFeup loop (Google Benchmark). Run from a release build:
 //   build/release/bench/legofeup_core_bench
 // Each benchmark repeats 10 times and reports mean / median / stddev; quote the median.
+// The loop step also reports allocations_per_step: this program replaces the global
+// operator new with one that counts (the step must stay at 0).
 
 #include <benchmark/benchmark.h>
 
+#include <atomic>
+#include <cstdlib>
+#include <new>
 #include <vector>
 
 #include "legofeup/core/chi_square.hpp"
 #include "legofeup/core/legofeup_loop.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
+
+namespace {
+
+std::atomic<long> g_allocations{0};
+
+}  // namespace
+
+void* operator new(std::size_t size) {
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* memory = std::malloc(size == 0 ? 1 : size)) {
+        return memory;
+    }
+    throw std::bad_alloc();
+}
+void operator delete(void* memory) noexcept {
+    std::free(memory);
+}
+void operator delete(void* memory, std::size_t /*size*/) noexcept {
+    std::free(memory);
+}
 
 namespace {
 
@@ -45,8 +70,11 @@ void BM_LoopStepWithWallUpdate(benchmark::State& state) {
     std::size_t next = 0;
     long updates = 0;
     long steps = 0;
+    long allocations = 0;
     for (auto _ : state) {
+        const long before = g_allocations.load(std::memory_order_relaxed);
         const LoopSnapshot& snapshot = loop.step(frames[next]);
+        allocations += g_allocations.load(std::memory_order_relaxed) - before;
         benchmark::DoNotOptimize(snapshot.wheels);
         updates += snapshot.update.status == StepStatus::Applied ? 1 : 0;
         ++steps;
@@ -59,6 +87,8 @@ void BM_LoopStepWithWallUpdate(benchmark::State& state) {
     }
     state.counters["updates_per_step"] =
         benchmark::Counter(static_cast<double>(updates) / static_cast<double>(steps));
+    state.counters["allocations_per_step"] =
+        benchmark::Counter(static_cast<double>(allocations) / static_cast<double>(steps));
 }
 BENCHMARK(BM_LoopStepWithWallUpdate)->Repetitions(10)->ReportAggregatesOnly(true);
 

@@ -42,7 +42,7 @@ void LaserLocaliser::describe(LaserUpdate& report) const {
     report.total_skipped = total_skipped_;
 }
 
-void LaserLocaliser::process(PoseFilter& filter, const LaserScan& scan, LaserUpdate& report) {
+void LaserLocaliser::process(PoseEstimator& filter, const LaserScan& scan, LaserUpdate& report) {
     if (map_ == nullptr || map_->empty()) {
         describe(report);
         return;  // validation requires a map with this localisation; nothing to match against
@@ -104,7 +104,7 @@ void LaserLocaliser::process(PoseFilter& filter, const LaserScan& scan, LaserUpd
     report.correspondence_distance = threshold;
 }
 
-void LaserLocaliser::count_mismatch(PoseFilter& filter, LaserUpdate& report) {
+void LaserLocaliser::count_mismatch(PoseEstimator& filter, LaserUpdate& report) {
     ++consecutive_mismatches_;
     if (!tuning_.kidnap_recovery || recovery_active_
         || consecutive_mismatches_ < tuning_.recovery_after_mismatches) {

@@ -10,6 +10,7 @@
 #include "legofeup/core/compass_model.hpp"
 #include "legofeup/core/laser_process_model.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
+#include "legofeup/core/pose_estimator_registry.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
 namespace legofeup {
@@ -17,10 +18,6 @@ namespace {
 
 /// P0 of the fusion filter's (v, ω): the robot starts at rest, known to about 0.1 m/s.
 constexpr double kInitialVelocityVariance = 1e-2;
-
-FilterKind other_kind(FilterKind kind) {
-    return kind == FilterKind::Ekf ? FilterKind::Ukf : FilterKind::Ekf;
-}
 
 /// Wall-clock seconds `work` takes (the cost per step the beacon lesson compares).
 template <class Work>
@@ -33,7 +30,10 @@ double timed(Work&& work) {
 }  // namespace
 
 LegoFeupLoop::LegoFeupLoop(LoopConfig config)
-    : config_(std::move(config)), controller_(config_.controller) {
+    : config_(std::move(config)),
+      filter_(make_pose_estimator(FilterKind::Ekf)),
+      shadow_(make_pose_estimator(FilterKind::Ekf)),
+      controller_(config_.controller) {
     if (const auto issues = validate(config_); !issues.empty()) {
         throw invalid_configuration("loop", issues);
     }
@@ -55,16 +55,28 @@ void LegoFeupLoop::apply_tuning() {
     beacon_gate_.enabled = lesson.beacons.gate_enabled;
     beacon_gate_.threshold =
         chi_square_quantile(lesson.beacons.gate_probability, BeaconBearingMeasurement::kSize);
-    filter_.set_kind(lesson.kind);
-    shadow_.set_kind(other_kind(lesson.kind));
-    for (PoseFilter* filter : {&filter_, &shadow_}) {
-        filter->set_limits(tuning.limits);
-        filter->set_ukf_params(lesson.ukf);
-    }
+    association_threshold_ = association_gate_threshold(config_.association.gate_probability);
+    // A new kind starts from the current x and P, conditioned with the settings in force
+    // so far; then both take the new ones.
+    switch_kind(filter_, lesson.kind);
+    switch_kind(shadow_, pose_estimator_entry(lesson.kind).shadow);
+    estimator_settings_ = {tuning.limits, lesson.ukf};
+    filter_->configure(estimator_settings_);
+    shadow_->configure(estimator_settings_);
     fusion_.set_limits(tuning.limits);
     laser_.configure(lesson.laser, config_.map);
     shadow_laser_.configure(lesson.laser, config_.map);
     speeds_.configure(lesson, config_.odometry);
+}
+
+void LegoFeupLoop::switch_kind(std::unique_ptr<PoseEstimator>& estimator, FilterKind kind) const {
+    if (estimator->kind() == kind) {
+        return;
+    }
+    std::unique_ptr<PoseEstimator> next = make_pose_estimator(kind);
+    next->configure(estimator_settings_);
+    next->reset(estimator->state(), estimator->covariance());
+    estimator = std::move(next);
 }
 
 void LegoFeupLoop::reset() {
@@ -72,8 +84,8 @@ void LegoFeupLoop::reset() {
     const StateCovariance P0 =
         StateVector(initial.var_x, initial.var_y, initial.var_theta).asDiagonal();
     const StateVector x0 = to_state(initial.pose);
-    filter_.reset(x0, P0);
-    shadow_.reset(x0, P0);
+    filter_->reset(x0, P0);
+    shadow_->reset(x0, P0);
     fusion_.reset(x0, P0, kInitialVelocityVariance);
     laser_.reset();
     shadow_laser_.reset();
@@ -85,10 +97,11 @@ void LegoFeupLoop::reset() {
     glitches_ = 0;
     last_time_ = 0.0;
     snapshot_ = LoopSnapshot{};
+    laser_report_empty_ = true;
     snapshot_.localisation = config_.lesson.localisation;
-    snapshot_.filter_kind = filter_.kind();
-    snapshot_.estimate = filter_.state();
-    snapshot_.covariance = filter_.covariance();
+    snapshot_.filter_kind = filter_->kind();
+    snapshot_.estimate = filter_->state();
+    snapshot_.covariance = filter_->covariance();
     snapshot_.odometry_pose = odometry_pose_;
 }
 
@@ -103,13 +116,13 @@ std::vector<ConfigIssue> LegoFeupLoop::reconfigure(LoopConfig config) {
     config_ = std::move(config);
     // A new localisation continues from the current belief rather than jumping back.
     if (after == Localisation::GyroFusion && before != Localisation::GyroFusion) {
-        fusion_.reset(filter_.state(), filter_.covariance(), kInitialVelocityVariance);
+        fusion_.reset(filter_->state(), filter_->covariance(), kInitialVelocityVariance);
     } else if (before == Localisation::GyroFusion && after != Localisation::GyroFusion) {
-        filter_.reset(fusion_.pose(), fusion_.pose_covariance());
+        filter_->reset(fusion_.pose(), fusion_.pose_covariance());
     }
     apply_tuning();
     if (shadow_starts) {
-        shadow_.reset(filter_.state(), filter_.covariance());
+        shadow_->reset(filter_->state(), filter_->covariance());
         shadow_laser_.reset();
     }
     return issues;
@@ -196,14 +209,14 @@ void LegoFeupLoop::estimate(const SensorFrame* frame, bool predict, double perio
         }
         return;
     }
-    s.filter_seconds = timed([&] { run_pose_filter(filter_, frame, predict, period, true); });
+    s.filter_seconds = timed([&] { run_pose_filter(*filter_, frame, predict, period, true); });
     if (config_.lesson.compare_kinds) {
         s.shadow_filter_seconds =
-            timed([&] { run_pose_filter(shadow_, frame, predict, period, false); });
+            timed([&] { run_pose_filter(*shadow_, frame, predict, period, false); });
     }
 }
 
-StepStatus LegoFeupLoop::predict_pose(PoseFilter& filter, const OdometryIncrement& increment,
+StepStatus LegoFeupLoop::predict_pose(PoseEstimator& filter, const OdometryIncrement& increment,
                                       double period) {
     // Eq. 11–13: X̂ ← f(X̂, U, 0), P ← ∇f_X P ∇f_Xᵀ + ∇f_q Q ∇f_qᵀ; the compass lesson's Q
     // depends on the motion and heading (paper 004 eq. 5), the laser lesson's has a static
@@ -256,15 +269,16 @@ void LegoFeupLoop::read_ir(const SensorFrame& frame) {
     }
 }
 
-void LegoFeupLoop::update_with_walls(PoseFilter& filter, bool primary) {
+void LegoFeupLoop::update_with_walls(PoseEstimator& filter, bool primary) {
     LoopSnapshot& s = snapshot_;
     if (!s.observation_available) {
         return;
     }
     // Fig. 4: which wall, judged from this filter's current (predicted) estimate.
-    const AssociationResult association = associate_wall(
-        {to_pose(filter.state()), filter.covariance()}, s.observation, config_.walls,
-        config_.ir_mount, config_.ir_curve.max_range, ir_noise_, config_.association);
+    const AssociationResult association =
+        associate_wall({to_pose(filter.state()), filter.covariance()}, s.observation, config_.walls,
+                       config_.ir_mount, config_.ir_curve.max_range, ir_noise_, config_.association,
+                       association_threshold_);
     if (primary) {
         s.association = association;
     }
@@ -281,7 +295,8 @@ void LegoFeupLoop::update_with_walls(PoseFilter& filter, bool primary) {
 
 // Paper 002: each sighting is one bearing measurement h(X) = atan2(b_y − y, b_x − x) − θ,
 // applied in turn (independent noises make sequential updates equal to a stacked one).
-void LegoFeupLoop::update_with_beacons(PoseFilter& filter, const SensorFrame& frame, bool primary) {
+void LegoFeupLoop::update_with_beacons(PoseEstimator& filter, const SensorFrame& frame,
+                                       bool primary) {
     const int count = std::min<int>(frame.beacons.count, kMaxBeaconSightings);
     for (int i = 0; i < count; ++i) {
         const BeaconSighting& sighting = frame.beacons.sightings[static_cast<std::size_t>(i)];
@@ -307,7 +322,7 @@ void LegoFeupLoop::update_with_beacons(PoseFilter& filter, const SensorFrame& fr
     }
 }
 
-void LegoFeupLoop::update_with_compass(PoseFilter& filter, const LoopSnapshot& s) {
+void LegoFeupLoop::update_with_compass(PoseEstimator& filter, const LoopSnapshot& s) {
     if (s.readings.has_compass && config_.lesson.compass.use_compass) {
         filter.update(
             CompassMeasurement(s.readings.compass_heading, config_.lesson.compass.r_compass));
@@ -316,7 +331,8 @@ void LegoFeupLoop::update_with_compass(PoseFilter& filter, const LoopSnapshot& s
 
 // Paper 001: the scan matched against the expected scan at this filter's prediction; the
 // match (if any) is a pose observation. The shadow filter matches too, unpublished.
-void LegoFeupLoop::update_with_laser(PoseFilter& filter, const SensorFrame& frame, bool primary) {
+void LegoFeupLoop::update_with_laser(PoseEstimator& filter, const SensorFrame& frame,
+                                     bool primary) {
     if (primary) {
         laser_.process(filter, frame.laser, snapshot_.laser);
     } else {
@@ -326,17 +342,23 @@ void LegoFeupLoop::update_with_laser(PoseFilter& filter, const SensorFrame& fram
 }
 
 // This period's laser report starts empty but for what outlives a scan (the mismatch
-// streak, the recovery, the totals), so a period without a scan still shows them.
+// streak, the recovery, the totals), so a period without a scan still shows them. Only the
+// laser lesson writes the report: in the others it stays empty, and clearing it again (its
+// expected scan is 2 KB) would be a third of the step.
 void LegoFeupLoop::begin_laser_report() {
-    snapshot_.laser = LaserUpdate{};
+    if (!laser_report_empty_) {
+        snapshot_.laser = LaserUpdate{};
+        laser_report_empty_ = true;
+    }
     if (config_.lesson.localisation == Localisation::Laser) {
         laser_.describe(snapshot_.laser);
+        laser_report_empty_ = false;  // and process() may fill the rest
     }
 }
 
 // One filter's whole period: predict (when there was odometry), then the localisation's
 // corrections. `frame` is null when only a prediction is due.
-void LegoFeupLoop::run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict,
+void LegoFeupLoop::run_pose_filter(PoseEstimator& filter, const SensorFrame* frame, bool predict,
                                    double period, bool primary) {
     if (predict) {
         const StepStatus status = predict_pose(filter, snapshot_.increment, period);
@@ -436,10 +458,10 @@ const LoopSnapshot& LegoFeupLoop::step_without_frame(double time) {
 void LegoFeupLoop::control_and_publish() {
     LoopSnapshot& s = snapshot_;
     s.localisation = config_.lesson.localisation;
-    s.filter_kind = filter_.kind();
+    s.filter_kind = filter_->kind();
     if (uses_pose_filter()) {
-        s.estimate = filter_.state();
-        s.covariance = filter_.covariance();
+        s.estimate = filter_->state();
+        s.covariance = filter_->covariance();
         s.fused_velocity = {};
     } else {
         s.estimate = fusion_.pose();
@@ -448,7 +470,7 @@ void LegoFeupLoop::control_and_publish() {
     }
     s.shadow = ShadowEstimate{};
     if (config_.lesson.compare_kinds && uses_pose_filter()) {
-        s.shadow = {true, shadow_.kind(), shadow_.state(), shadow_.covariance()};
+        s.shadow = {true, shadow_->kind(), shadow_->state(), shadow_->covariance()};
     }
     // Control module on the updated estimate; eq. 1 turns (V, W) into wheel speeds.
     const ControlOutput control =

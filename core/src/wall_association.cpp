@@ -78,6 +78,14 @@ AssociationResult associate_wall(const PoseBelief& belief, const WallObservation
                                  const WallMap& walls, const IrMount& mount, double ir_max_range,
                                  const Eigen::Matrix2d& ir_covariance,
                                  const AssociationParams& params) {
+    return associate_wall(belief, observation, walls, mount, ir_max_range, ir_covariance, params,
+                          association_gate_threshold(params.gate_probability));
+}
+
+AssociationResult associate_wall(const PoseBelief& belief, const WallObservation& observation,
+                                 const WallMap& walls, const IrMount& mount, double ir_max_range,
+                                 const Eigen::Matrix2d& ir_covariance,
+                                 const AssociationParams& params, double gate_threshold) {
     const Pose2& estimate = belief.pose;
     AssociationResult result;
     result.outcome = AssociationOutcome::NoWallInView;
@@ -118,7 +126,7 @@ AssociationResult associate_wall(const PoseBelief& belief, const WallObservation
     result.distance_error = observation.centre_distance - result.predicted_distance;
     result.mahalanobis_d2 = mahalanobis_distance_squared(
         belief, WallMeasurement(line, result.side, observation, ir_covariance));
-    result.mahalanobis_threshold = association_gate_threshold(params.gate_probability);
+    result.mahalanobis_threshold = gate_threshold;
 
     // 3. The gate. The incidence test is geometry (the two beams must meet one straight
     // wall), not a test of fit, so it comes first under either gate.

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "kinematic_world.hpp"
-#include "legofeup/core/pose_filter.hpp"
+#include "legofeup/core/pose_estimator_registry.hpp"
 #include "legofeup/core/wall_association.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
@@ -176,12 +176,12 @@ TEST(AssociationMahalanobisGate, DistanceIsTheUpdatesNis) {
     const AssociationResult result =
         associate_wall({estimate, P}, obs, kArena, IrMount{}, kMaxRange, kR, params);
     ASSERT_EQ(result.wall, 2);
-    for (const FilterKind kind : {FilterKind::Ekf, FilterKind::Ukf}) {
-        PoseFilter filter;
-        filter.set_kind(kind);
-        filter.reset(to_state(estimate), P);
-        const auto report =
-            filter.update(WallMeasurement(kArena.line(2), result.side, obs, kR), MahalanobisGate{});
+    for (const PoseEstimatorEntry& entry : pose_estimators()) {
+        const FilterKind kind = entry.kind;
+        const std::unique_ptr<PoseEstimator> filter = entry.make();
+        filter->reset(to_state(estimate), P);
+        const auto report = filter->update(WallMeasurement(kArena.line(2), result.side, obs, kR),
+                                           MahalanobisGate{});
         ASSERT_EQ(report.status, StepStatus::Applied) << to_string(kind);
         EXPECT_NEAR(result.mahalanobis_d2, report.nis, 1e-9 * report.nis) << to_string(kind);
     }

@@ -8,7 +8,7 @@
 #include "legofeup/core/extended_kalman_filter.hpp"
 #include "legofeup/core/laser_pose_measurement.hpp"
 #include "legofeup/core/laser_process_model.hpp"
-#include "legofeup/core/pose_filter.hpp"
+#include "legofeup/core/pose_estimator_registry.hpp"
 #include "legofeup/core/pose_state_space.hpp"
 #include "legofeup/core/unscented_kalman_filter.hpp"
 #include "numeric_jacobian.hpp"
@@ -151,14 +151,14 @@ TEST(LaserPoseMeasurement, UkfAgreesWithTheEkf) {
         0.001, -0.002, 0.04;
     const StateVector x(1.0, 1.0, 0.3);
     const LaserPoseMeasurement measurement({1.05, 0.9, 0.4}, StateVector(0.008, 0.008, 0.01));
-    PoseFilter ekf(FilterKind::Ekf);
-    PoseFilter ukf(FilterKind::Ukf);
-    ASSERT_TRUE(ekf.reset(x, P));
-    ASSERT_TRUE(ukf.reset(x, P));
-    ASSERT_EQ(ekf.update(measurement).status, StepStatus::Applied);
-    ASSERT_EQ(ukf.update(measurement).status, StepStatus::Applied);
-    EXPECT_LT(max_abs(ekf.state() - ukf.state()), 1e-12);
-    EXPECT_LT(max_abs(ekf.covariance() - ukf.covariance()), 1e-12);
+    const std::unique_ptr<PoseEstimator> ekf = make_pose_estimator(FilterKind::Ekf);
+    const std::unique_ptr<PoseEstimator> ukf = make_pose_estimator(FilterKind::Ukf);
+    ASSERT_TRUE(ekf->reset(x, P));
+    ASSERT_TRUE(ukf->reset(x, P));
+    ASSERT_EQ(ekf->update(measurement).status, StepStatus::Applied);
+    ASSERT_EQ(ukf->update(measurement).status, StepStatus::Applied);
+    EXPECT_LT(max_abs(ekf->state() - ukf->state()), 1e-12);
+    EXPECT_LT(max_abs(ekf->covariance() - ukf->covariance()), 1e-12);
 }
 
 }  // namespace

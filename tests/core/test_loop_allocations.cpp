@@ -6,6 +6,7 @@
 #include "allocation_counter.hpp"
 #include "kinematic_world.hpp"
 #include "legofeup/core/legofeup_loop.hpp"
+#include "legofeup/core/pose_estimator_registry.hpp"
 
 namespace legofeup {
 namespace {
@@ -16,13 +17,12 @@ TEST(LoopAllocations, CountingWorks) {
     delete probe;
 }
 
-TEST(LoopAllocations, StepNeverAllocates) {
-    // A full lap: straights, corners (segment switches), walls (association and updates).
-    LegoFeupLoop loop(LoopConfig{});
+/// Drives `loop` one lap; returns the allocations its steps made and counts the applied
+/// wall updates in `updates`.
+long allocations_over_a_lap(LegoFeupLoop& loop, int& updates) {
     testing::KinematicRobot robot(loop.config().initial.pose, testing::KinematicRobotParams{});
     const std::vector<Wall>& walls = loop.config().walls.walls();
     long allocations = 0;
-    int updates = 0;
     for (int k = 0; k < 1900; ++k) {
         SensorFrame frame;
         frame.time = 0.05 * k;
@@ -36,8 +36,31 @@ TEST(LoopAllocations, StepNeverAllocates) {
         updates += snapshot->update.status == StepStatus::Applied ? 1 : 0;
         robot.drive(snapshot->wheels, 0.05);
     }
+    return allocations;
+}
+
+TEST(LoopAllocations, StepNeverAllocates) {
+    // A full lap: straights, corners (segment switches), walls (association and updates).
+    LegoFeupLoop loop(LoopConfig{});
+    int updates = 0;
+    EXPECT_EQ(allocations_over_a_lap(loop, updates), 0);
     EXPECT_GT(updates, 300);
-    EXPECT_EQ(allocations, 0);
+}
+
+// Every estimator of the registry, with its shadow running beside it: the estimators are
+// made when the kind is configured, never in a step.
+TEST(LoopAllocations, StepNeverAllocatesWithAnyEstimatorAndItsShadow) {
+    for (const PoseEstimatorEntry& entry : pose_estimators()) {
+        LoopConfig config;
+        config.lesson.kind = entry.kind;
+        config.lesson.compare_kinds = true;
+        LegoFeupLoop loop(config);
+        ASSERT_EQ(loop.filter().kind(), entry.kind);
+        int updates = 0;
+        EXPECT_EQ(allocations_over_a_lap(loop, updates), 0) << to_string(entry.kind);
+        EXPECT_GT(updates, 300) << to_string(entry.kind);
+        EXPECT_EQ(loop.snapshot().shadow.kind, entry.shadow) << to_string(entry.kind);
+    }
 }
 
 }  // namespace

@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 #include "legofeup/core/extended_kalman_filter.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
@@ -26,6 +30,44 @@ TEST(OdometryProcessModel, StateJacobianMatchesCentralDifferences) {
         const auto numeric = testing::central_difference<3, 3>(f, x, 1e-6, 0b100);
         EXPECT_LT((numeric - model.state_jacobian(x)).cwiseAbs().maxCoeff(), 1e-8)
             << "x = " << x.transpose();
+    }
+}
+
+/// True if a and b hold the same doubles bit for bit (−0 and +0 differ, NaN equals itself).
+template <class A, class B>
+bool same_bits(const A& a, const B& b) {
+    for (Eigen::Index i = 0; i < a.size(); ++i) {
+        if (std::bit_cast<std::uint64_t>(a.data()[i])
+            != std::bit_cast<std::uint64_t>(b.data()[i])) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// The EKF predicts through linearise (one cos φ, one sin φ): it must give exactly the
+// bits of the three separate hooks, signed zeros included (propagate's d + 0 makes −0 +0).
+TEST(OdometryProcessModel, LineariseIsTheThreeHooksBitForBit) {
+    Uniform uniform(37);
+    const Eigen::Matrix2d Q = Eigen::Vector2d(1e-6, 1e-5).asDiagonal();
+    std::vector<std::pair<StateVector, OdometryIncrement>> cases;
+    for (int trial = 0; trial < 200; ++trial) {
+        cases.emplace_back(StateVector(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-4.0, 4.0)),
+                           increment(uniform(-0.02, 0.02), uniform(-0.3, 0.3)));
+    }
+    OdometryIncrement negative_zeros;
+    negative_zeros.distance = -0.0;
+    negative_zeros.rotation = -0.0;
+    for (const double theta : {0.0, -0.0, kPi, -kPi}) {
+        cases.emplace_back(StateVector(-0.0, -0.0, theta), negative_zeros);
+        cases.emplace_back(StateVector(0.0, -0.0, theta), OdometryIncrement{});
+    }
+    for (const auto& [x, u] : cases) {
+        const OdometryProcessModel model(u, Q);
+        const OdometryProcessModel::Linearisation linearised = model.linearise(x);
+        EXPECT_TRUE(same_bits(linearised.state, model.predict_state(x))) << x.transpose();
+        EXPECT_TRUE(same_bits(linearised.state_jacobian, model.state_jacobian(x))) << x.transpose();
+        EXPECT_TRUE(same_bits(linearised.noise_jacobian, model.noise_jacobian(x))) << x.transpose();
     }
 }
 

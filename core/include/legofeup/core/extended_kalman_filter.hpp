@@ -7,6 +7,11 @@
 //   Matrix<N,N> state_jacobian(const Vector& x)      ∇f_X = ∂f/∂X        (eq. 13)
 //   Matrix<N,Nq> noise_jacobian(const Vector& x)     ∇f_q = ∂f/∂q        (eq. 13)
 //   Matrix<Nq,Nq> noise_covariance()                 Q
+//   optionally linearise(const Vector& x)           {state, state_jacobian, noise_jacobian}
+//                                                    the three above at once, for a model
+//                                                    whose three share work (the odometry's
+//                                                    cos φ and sin φ); the same bits as the
+//                                                    three separate hooks (a test checks it)
 // Measurement model hooks (one object per measurement):
 //   static constexpr int kSize;
 //   Vector measurement()                             z
@@ -108,11 +113,15 @@ class ExtendedKalmanFilter : public FilterBase<StateSpace> {
     template <EkfProcessModel<kSize> Model>
     StepStatus predict(const Model& model) {
         const Vector& x = this->state();
-        const auto F = model.state_jacobian(x);  // ∇f_X, at the prior estimate
-        const auto G = model.noise_jacobian(x);  // ∇f_q
-        const Covariance P =
-            F * this->covariance() * F.transpose() + G * model.noise_covariance() * G.transpose();
-        return this->commit(model.predict_state(x), P);
+        if constexpr (requires { model.linearise(x); }) {
+            const auto linearised = model.linearise(x);
+            return predict_from(linearised.state, linearised.state_jacobian,
+                                linearised.noise_jacobian, model.noise_covariance());
+        } else {
+            // ∇f_X and ∇f_q at the prior estimate.
+            return predict_from(model.predict_state(x), model.state_jacobian(x),
+                                model.noise_jacobian(x), model.noise_covariance());
+        }
     }
 
     /// Update (eq. 14–21) with one measurement.
@@ -147,6 +156,15 @@ class ExtendedKalmanFilter : public FilterBase<StateSpace> {
                                  + report.gain * R * report.gain.transpose();
         report.status = this->commit(x_new, P_new);
         return report;
+    }
+
+  private:
+    /// Eq. 11–12 once f(X̂), ∇f_X, ∇f_q and Q are known.
+    template <class StateJacobian, class NoiseJacobian, class NoiseCovariance>
+    StepStatus predict_from(const Vector& predicted, const StateJacobian& F, const NoiseJacobian& G,
+                            const NoiseCovariance& Q) {
+        const Covariance P = F * this->covariance() * F.transpose() + G * Q * G.transpose();
+        return this->commit(predicted, P);
     }
 };
 

@@ -1,7 +1,8 @@
 #pragma once
-// The thin base every Gaussian filter of LegoFeup Lab shares (EKF now, UKF and the other
-// lessons' filters later): it owns the state x and covariance P and guards what goes into
-// them. The estimation steps live in the derived filters; the problem lives in model hooks.
+// The thin base every Gaussian filter of LegoFeup Lab shares (the EKF and the UKF of the pose,
+// the 5-state fusion EKF, the speed KFs): it owns the state x and covariance P and guards what
+// goes into them. The estimation steps live in the derived filters; the problem lives in model
+// hooks. The loop holds the pose filters through PoseEstimator (pose_estimator.hpp).
 //
 // A state space supplies
 //   static constexpr int kSize;                 dimension of x

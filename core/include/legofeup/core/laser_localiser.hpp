@@ -29,7 +29,7 @@
 #include "legofeup/core/lesson_filters_config.hpp"
 #include "legofeup/core/loop_snapshot.hpp"
 #include "legofeup/core/occupancy_grid.hpp"
-#include "legofeup/core/pose_filter.hpp"
+#include "legofeup/core/pose_estimator.hpp"
 
 namespace legofeup {
 
@@ -44,7 +44,7 @@ class LaserLocaliser {
 
     /// Steps 1–7 for one scan against `filter`'s current (predicted) estimate; `report`
     /// receives everything, including the persistent state (describe()).
-    void process(PoseFilter& filter, const LaserScan& scan, LaserUpdate& report);
+    void process(PoseEstimator& filter, const LaserScan& scan, LaserUpdate& report);
 
     /// Writes the state that outlives a scan (streak, recovery, totals) and, as the
     /// correspondence distance, the one the next scan will use.
@@ -57,7 +57,7 @@ class LaserLocaliser {
 
   private:
     /// Step 7: one more mismatched scan; inflates P once per streak.
-    void count_mismatch(PoseFilter& filter, LaserUpdate& report);
+    void count_mismatch(PoseEstimator& filter, LaserUpdate& report);
 
     LaserTuning tuning_;
     std::shared_ptr<const OccupancyGrid> map_;

@@ -13,17 +13,21 @@
 // The further lessons replace what corrects the odometry (LessonFilters::localisation):
 // bearings to beacons (paper 002), the 5-state encoder + accelerometer + gyro EKF (paper 003)
 // or a compass with state-dependent odometry noise (paper 004), or a laser scan matched (ICP)
-// against the expected scan in an occupancy-grid map (paper 001). The pose filter is an EKF or
-// a UKF (a live setting); a "shadow" of the other kind can run on the same frames for
-// comparison. The speed estimators of paper 003 run beside every localisation.
+// against the expected scan in an occupancy-grid map (paper 001). The pose filter is any
+// PoseEstimator of the registry (pose_estimator_registry.hpp: the EKF or the UKF, a live
+// setting), held through that one interface; a "shadow" of the kind the registry pairs with
+// it can run on the same frames for comparison. The localisation picks the models (which
+// prediction, which measurements), the estimator the algorithm: the two never meet in a
+// switch. The speed estimators of paper 003 run beside every localisation.
 
+#include <memory>
 #include <vector>
 
 #include "legofeup/core/gyro_fusion_estimator.hpp"
 #include "legofeup/core/laser_localiser.hpp"
 #include "legofeup/core/loop_config.hpp"
 #include "legofeup/core/loop_snapshot.hpp"
-#include "legofeup/core/pose_filter.hpp"
+#include "legofeup/core/pose_estimator.hpp"
 #include "legofeup/core/sensor_frame.hpp"
 #include "legofeup/core/speed_estimators.hpp"
 
@@ -61,30 +65,36 @@ class LegoFeupLoop {
 
     const LoopConfig& config() const { return config_; }
     const LoopSnapshot& snapshot() const { return snapshot_; }
-    const PoseFilter& filter() const { return filter_; }
+    const PoseEstimator& filter() const { return *filter_; }
 
   private:
     void apply_tuning();
+    /// Replaces `estimator` by one of `kind` (when it differs) that continues from its x and P.
+    void switch_kind(std::unique_ptr<PoseEstimator>& estimator, FilterKind kind) const;
     bool advance_odometry(const SensorFrame& frame);
     Eigen::Matrix2d skipped_motion_noise(double period) const;
     double periods_between(double seconds) const;  // Δt/Ts, see predict_pose
     void estimate(const SensorFrame* frame, bool predict, double period);
-    StepStatus predict_pose(PoseFilter& filter, const OdometryIncrement& increment, double period);
+    StepStatus predict_pose(PoseEstimator& filter, const OdometryIncrement& increment,
+                            double period);
     void read_ir(const SensorFrame& frame);
-    void update_with_walls(PoseFilter& filter, bool primary);
-    void update_with_beacons(PoseFilter& filter, const SensorFrame& frame, bool primary);
-    void update_with_compass(PoseFilter& filter, const LoopSnapshot& s);
-    void update_with_laser(PoseFilter& filter, const SensorFrame& frame, bool primary);
+    void update_with_walls(PoseEstimator& filter, bool primary);
+    void update_with_beacons(PoseEstimator& filter, const SensorFrame& frame, bool primary);
+    void update_with_compass(PoseEstimator& filter, const LoopSnapshot& s);
+    void update_with_laser(PoseEstimator& filter, const SensorFrame& frame, bool primary);
     void begin_laser_report();
-    void run_pose_filter(PoseFilter& filter, const SensorFrame* frame, bool predict, double period,
-                         bool primary);
+    void run_pose_filter(PoseEstimator& filter, const SensorFrame* frame, bool predict,
+                         double period, bool primary);
     void run_gyro_fusion(const SensorFrame* frame, double period);
     void control_and_publish();
     bool uses_pose_filter() const;
 
     LoopConfig config_;
-    PoseFilter filter_;
-    PoseFilter shadow_;  ///< the other kind, when lesson.compare_kinds
+    // The pose filter and its shadow (run when lesson.compare_kinds), made by the registry
+    // when the kind changes, never in a step; the settings they were last configured with.
+    PoseEstimatorSettings estimator_settings_;
+    std::unique_ptr<PoseEstimator> filter_;
+    std::unique_ptr<PoseEstimator> shadow_;
     GyroFusionEstimator fusion_;
     // The laser lesson's scan matching, one per pose filter (each matches against its own
     // prediction and keeps its own mismatch streak); the shadow's report is not published.
@@ -105,9 +115,11 @@ class LegoFeupLoop {
     Eigen::Matrix2d process_noise_ = Eigen::Matrix2d::Zero();  // Q
     Eigen::Matrix2d ir_noise_ = Eigen::Matrix2d::Zero();       // R
     MahalanobisGate gate_;
+    double association_threshold_ = 0.0;  // χ²₂ quantile of the association gate
     MahalanobisGate beacon_gate_;
 
     LoopSnapshot snapshot_;
+    bool laser_report_empty_ = true;  // snapshot_.laser is LaserUpdate{} (begin_laser_report)
 };
 
 }  // namespace legofeup

@@ -38,6 +38,15 @@ class OdometryProcessModel {
     }
     StateCovariance state_jacobian(const StateVector& x) const;
     NoiseJacobian noise_jacobian(const StateVector& x) const;
+
+    /// The three hooks above at once, with one cos φ and one sin φ instead of three of each
+    /// (they were half of the EKF's prediction); bit for bit the same values.
+    struct Linearisation {
+        StateVector state;               ///< f(X, U, 0)
+        StateCovariance state_jacobian;  ///< ∇f_X
+        NoiseJacobian noise_jacobian;    ///< ∇f_q
+    };
+    Linearisation linearise(const StateVector& x) const;
     const NoiseCovariance& noise_covariance() const { return q_; }
 
   private:

@@ -105,6 +105,14 @@ AssociationResult associate_wall(const PoseBelief& belief, const WallObservation
                                  const Eigen::Matrix2d& ir_covariance,
                                  const AssociationParams& params);
 
+/// The same with the Mahalanobis gate's threshold given, as association_gate_threshold(
+/// params.gate_probability) returns it: the loop computes it once per configuration, since
+/// the quantile's Newton iterations cost several times a whole loop step.
+AssociationResult associate_wall(const PoseBelief& belief, const WallObservation& observation,
+                                 const WallMap& walls, const IrMount& mount, double ir_max_range,
+                                 const Eigen::Matrix2d& ir_covariance,
+                                 const AssociationParams& params, double gate_threshold);
+
 /// The Mahalanobis gate's threshold: the χ²(2) quantile at `probability`.
 double association_gate_threshold(double probability);
 
