@@ -60,9 +60,12 @@ TEST(ArenaCameraSteering, FollowingCentresTheRobotAndStoppingKeepsTheView) {
     camera.zoom_by(2.0, QPointF(10.0, 10.0), kViewport, robot);
     EXPECT_DOUBLE_EQ(camera.shown(robot).scale(), 600.0);
     EXPECT_EQ(camera.shown(robot).transform(kViewport).map(robot), QPointF(400.0, 300.0));
-    // Stopping leaves the view centred where following left it, and the robot may move on.
-    EXPECT_TRUE(camera.set_following(false, robot));
-    EXPECT_EQ(camera.shown(QPointF(5.0, 5.0)).centre(), robot);
+    // The robot drives on, the view with it; stopping leaves the view centred where
+    // following left it, and the robot may move on without it.
+    const QPointF later(0.9, 0.1);
+    EXPECT_EQ(camera.shown(later).centre(), later);
+    EXPECT_TRUE(camera.set_following(false, later));
+    EXPECT_EQ(camera.shown(QPointF(5.0, 5.0)).centre(), later);
 }
 
 TEST(ArenaCameraSteering, ZoomAndPanLeaveTheFit) {
