@@ -7,6 +7,7 @@
 #include "arena_drawing.hpp"
 #include "legofeup/core/angles.hpp"
 #include "legofeup/core/ir_geometry.hpp"
+#include "legofeup/ui/arena/arena_sizes.hpp"
 
 namespace legofeup::ui {
 
@@ -255,7 +256,7 @@ void ArenaPainter::heading_marker(const Pose2& pose, const QColor& color) {
 void ArenaPainter::wall_names(const std::vector<Wall>& walls, const QRectF& arena) {
     use_widget();
     QFont font = style_.font;
-    font.setPointSizeF(font.pointSizeF() * 0.85);
+    font.setPointSizeF(font.pointSizeF() * kArenaSizes.wall_name_font);
     painter_.setFont(font);
     const QFontMetricsF metrics(font);
     painter_.setPen(with_alpha(style_.colors.foreground, 170));
@@ -347,11 +348,14 @@ void ArenaPainter::scale_bar(double pixels_per_metre, const QRectF& widget) {
 void ArenaPainter::corner_text(const QString& text, const QRectF& widget, Qt::Alignment corner) {
     use_widget();
     const QFontMetricsF metrics(style_.font);
-    const QSizeF size(metrics.horizontalAdvance(text) + 12.0, metrics.height() + 6.0);
-    const double x = corner.testFlag(Qt::AlignRight) ? widget.right() - size.width() - 10.0
-                                                     : widget.left() + 10.0;
-    const double y = corner.testFlag(Qt::AlignBottom) ? widget.bottom() - size.height() - 10.0
-                                                      : widget.top() + 10.0;
+    const QSizeF padding = kArenaSizes.corner_box_padding;
+    const QSizeF size(metrics.horizontalAdvance(text) + padding.width(),
+                      metrics.height() + padding.height());
+    const double inset = kArenaSizes.corner_inset;
+    const double x = corner.testFlag(Qt::AlignRight) ? widget.right() - size.width() - inset
+                                                     : widget.left() + inset;
+    const double y = corner.testFlag(Qt::AlignBottom) ? widget.bottom() - size.height() - inset
+                                                      : widget.top() + inset;
     const QRectF box(QPointF(x, y), size);
     painter_.setPen(Qt::NoPen);
     painter_.setBrush(style_.colors.label_background);

@@ -1,10 +1,10 @@
 #include "legofeup/ui/arena/laser_layer.hpp"
 
-#include <QCoreApplication>
 #include <algorithm>
 #include <vector>
 
 #include "arena_drawing.hpp"
+#include "arena_text.hpp"
 
 namespace legofeup::ui {
 
@@ -23,10 +23,6 @@ QPolygonF world_points(const LaserScan& scan, const ScanGeometry& geometry,
         polygon.append(to_point(p));
     }
     return polygon;
-}
-
-QString tr(const char* text) {
-    return QCoreApplication::translate("ArenaView", text);
 }
 
 }  // namespace
@@ -69,21 +65,39 @@ QString laser_status_text(const LaserUpdate& update, const LaserScene& scene) {
         return {};
     }
     if (update.wrong_beam_count) {
-        return tr("scan skipped: %1 beams expected").arg(scene.geometry.beam_count);
+        return arena_text::tr("scan skipped: %1 beams expected").arg(scene.geometry.beam_count);
     }
     if (update.recovery_active) {
-        return tr("recovery: P×%1 · mismatch ×%2")
+        return arena_text::tr("recovery: P×%1 · mismatch ×%2")
             .arg(scene.recovery_covariance_factor, 0, 'g', 3)
             .arg(update.consecutive_mismatches);
     }
     if (update.matched) {
-        return tr("ICP matched %1 pts").arg(update.icp.matched_points);
+        return arena_text::tr("ICP matched %1 pts").arg(update.icp.matched_points);
     }
     return update.icp.converged
-               ? tr("mismatch ×%1 · %2 pts")
+               ? arena_text::tr("mismatch ×%1 · %2 pts")
                      .arg(update.consecutive_mismatches)
                      .arg(update.icp.matched_points)
-               : tr("mismatch ×%1 · not converged").arg(update.consecutive_mismatches);
+               : arena_text::tr("mismatch ×%1 · not converged").arg(update.consecutive_mismatches);
+}
+
+LaserScanPoints latest_laser_scan_points(const RunHistory& history) {
+    const ArenaScene& scene = history.scene();
+    if (!scene.laser.active) {
+        return {};
+    }
+    const RunSample* sample = latest_scan_sample(history);
+    return sample != nullptr ? laser_scan_points(*sample, scene.laser) : LaserScanPoints{};
+}
+
+QString latest_laser_status_text(const RunHistory& history) {
+    const ArenaScene& scene = history.scene();
+    if (!scene.laser.active) {
+        return {};
+    }
+    const RunSample* sample = latest_scan_sample(history);
+    return sample != nullptr ? laser_status_text(sample->snapshot.laser, scene.laser) : QString();
 }
 
 }  // namespace legofeup::ui

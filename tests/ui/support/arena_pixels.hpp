@@ -1,10 +1,11 @@
 #pragma once
-// Reading what an ArenaView drew: its picture as ARGB32, and how close the pixels around a
-// point come to a colour (for "the scan is drawn there in cyan" checks).
+// Showing an ArenaView and reading what it drew: its picture as ARGB32, and how close the
+// pixels around a point come to a colour (for "the scan is drawn there in cyan" checks).
 
 #include <QColor>
 #include <QImage>
 #include <QPointF>
+#include <QTest>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -12,6 +13,16 @@
 #include "legofeup/ui/arena/arena_view.hpp"
 
 namespace legofeup::ui::testing {
+
+/// Shows `view` at `size` and fits the arena into it.
+inline void show_fitted(ArenaView& view, QSize size) {
+    view.resize(size);
+    view.show();
+    if (!QTest::qWaitForWindowExposed(&view)) {
+        qWarning("window not exposed");
+    }
+    view.fitArena();
+}
 
 inline QImage render(ArenaView& view) {
     return view.grab().toImage().convertToFormat(QImage::Format_ARGB32);

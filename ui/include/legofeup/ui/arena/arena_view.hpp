@@ -14,6 +14,12 @@
 // space: the main window drives the robot with them) is ignored so it reaches the window.
 // While a pose is being picked (kidnapping, beginPosePick()), a press picks the place, the
 // drag from it the heading, the release emits posePicked(); Esc cancels.
+//
+// The view is the widget only: settings, events and signals. Its parts do one job each: the
+// camera (ArenaCamera), the legend's place (LegendPlacement) and rows (legend_rows.hpp),
+// the kidnap picker (PosePicker), the caches (ArenaCache, HistoryLayer, MapPictures), and
+// the painting of a frame (paint_arena), which draws the layers the run's lesson registered
+// (arena_layers.hpp).
 
 #include <QImage>
 #include <QPointF>
@@ -23,13 +29,19 @@
 #include <QTransform>
 #include <QWidget>
 
+#include <span>
 #include <vector>
 
 #include "legofeup/ui/arena/arena_cache.hpp"
-#include "legofeup/ui/arena/arena_painter.hpp"
+#include "legofeup/ui/arena/arena_camera.hpp"
+#include "legofeup/ui/arena/arena_layers.hpp"
+#include "legofeup/ui/arena/arena_legend.hpp"
 #include "legofeup/ui/arena/covariance_ellipse.hpp"
 #include "legofeup/ui/arena/history_layer.hpp"
 #include "legofeup/ui/arena/laser_layer.hpp"
+#include "legofeup/ui/arena/legend_placement.hpp"
+#include "legofeup/ui/arena/map_pictures.hpp"
+#include "legofeup/ui/arena/pose_picker.hpp"
 #include "legofeup/ui/arena/world_camera.hpp"
 #include "legofeup/ui/frame_stats.hpp"
 #include "legofeup/ui/run_history.hpp"
@@ -41,12 +53,14 @@ class ArenaView : public QWidget {
 
   public:
     explicit ArenaView(const RunHistory& history, QWidget* parent = nullptr);
+    /// A view drawing the lessons' layers of `layers` (built_in_arena_layers() above).
+    ArenaView(const RunHistory& history, ArenaLayerRegistry layers, QWidget* parent = nullptr);
 
     void setEllipseConfidence(EllipseConfidence level);
     EllipseConfidence ellipseConfidence() const { return confidence_; }
     /// Keeps the latest estimate in the centre of the view (a drag turns it off).
     void setFollowRobot(bool on);
-    bool followRobot() const { return follow_; }
+    bool followRobot() const { return camera_.following(); }
     /// The trail of past ellipses, one per second of run time.
     void setShowTrail(bool on);
     bool showTrail() const { return show_trail_; }
@@ -85,8 +99,8 @@ class ArenaView : public QWidget {
     QRectF legendRect() const;
     /// A widget too small to give the legend room folds it into a "Legend" tab in the
     /// top-right corner, so the arena keeps its size; the tab opens under the mouse.
-    bool legendFolded() const { return legend_folded_; }
-    bool legendOpen() const { return legend_open_; }
+    bool legendFolded() const { return legend_.folded(); }
+    bool legendOpen() const { return legend_.open(); }
     /// Opens or closes a folded legend (the mouse does it over the tab).
     void setLegendOpen(bool open);
     /// The latest laser scan as drawn (world coordinates); empty without one.
@@ -94,14 +108,14 @@ class ArenaView : public QWidget {
     /// The laser status label as drawn ("ICP matched 512 pts"); empty without a scan.
     QString laserStatusText() const;
     /// The world's map as drawn (one pixel per cell), and where its pixels go in the world.
-    const QImage& mapImage() const { return map_image_; }
+    const QImage& mapImage() const { return maps_.world_map(); }
 
     /// Kidnapping: the next press picks where the robot goes and the drag from there its
     /// heading (without a drag it keeps the true heading); emits posePicked().
     void beginPosePick();
     /// Leaves the pose picking without a pose (posePickCancelled()).
     void cancelPosePick();
-    bool pickingPose() const { return picking_; }
+    bool pickingPose() const { return picker_.active(); }
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
@@ -137,10 +151,14 @@ class ArenaView : public QWidget {
 
   private:
     /// The camera as drawn: centred on the latest estimate when following.
-    WorldCamera effectiveCamera() const;
+    WorldCamera shownCamera() const;
+    /// Widget pixels → world, the inverse of worldToWidget().
+    QTransform widgetToWorld() const;
+    /// What "fit the arena" shows (a default square before there is anything).
+    QRectF fittedWorld() const;
     void fitToArena();
-    /// Lays the legend out beside or above the arena, whichever leaves the arena larger, and
-    /// returns the widget area the arena is fitted into.
+    /// Lays the legend out (LegendPlacement) and returns the widget area the arena is
+    /// fitted into.
     QRectF layoutLegend();
     /// A setting changed what the legend holds or how large the text is.
     void layoutChanged();
@@ -149,41 +167,28 @@ class ArenaView : public QWidget {
     double fitMargin() const;
     QFont scaledFont() const;
     QFont legendFont() const;
+    /// The layers of the run's lesson.
+    std::span<const ArenaLayer* const> lessonLayers() const;
     std::vector<LegendRow> legendRows() const;
-    /// Remakes the map pictures when the run's map or the palette changed.
-    void updateMapImages(const ArenaColors& colors);
     /// The heading a pick without a drag keeps: the truth's, else the estimate's.
     double currentHeading() const;
-    /// The pose being picked, from the press and the cursor.
-    Pose2 pickedPose(const QPointF& cursor) const;
 
     const RunHistory& history_;
+    ArenaLayerRegistry layers_;
     ArenaCache cache_;
-    HistoryLayer layer_;
-    WorldCamera camera_;
+    HistoryLayer history_picture_;
+    MapPictures maps_;
+    ArenaCamera camera_;
+    LegendPlacement legend_;
+    PosePicker picker_;
     FrameStats stats_;
     EllipseConfidence confidence_ = EllipseConfidence::OneSigma;
-    bool follow_ = false;
     bool show_trail_ = true;
     bool show_odometry_ = true;
     bool show_truth_ = true;
     bool show_legend_ = true;
     bool show_frame_times_ = false;
     double text_scale_ = 1.0;
-    LegendLayout legend_layout_;  ///< the legend as laid out at the last fit
-    QStringList legend_texts_;    ///< the texts it was laid out for
-    bool legend_folded_ = false;  ///< no room for the legend: a tab instead
-    bool legend_open_ = false;    ///< the folded legend is open (the mouse is over it)
-    QImage map_image_;            ///< the world's map, one pixel per cell
-    QImage filter_map_image_;     ///< the laser filter's map when it is not the world's
-    const OccupancyGrid* map_source_ = nullptr;
-    const OccupancyGrid* filter_map_source_ = nullptr;
-    QRgb map_colour_ = 0;  ///< the occupied colour the pictures were made with
-    bool picking_ = false;
-    bool pick_pressed_ = false;
-    QPointF pick_from_;    ///< widget pixels: where the press picked the place
-    QPointF pick_cursor_;  ///< widget pixels: where the drag is
-    bool fitted_ = true;   ///< the view shows the fitted arena: refit when resized
     bool dragging_ = false;
     QPointF drag_last_;
 };

@@ -31,4 +31,11 @@ LaserScanPoints laser_scan_points(const RunSample& sample, const LaserScene& sce
 /// "recovery: P×10 · mismatch ×104"; empty when the sample has no scan.
 QString laser_status_text(const LaserUpdate& update, const LaserScene& scene);
 
+/// The latest scan of `history` as the arena draws it; empty outside the laser lesson or
+/// before its first scan.
+LaserScanPoints latest_laser_scan_points(const RunHistory& history);
+/// That scan's status (laser_status_text); empty outside the laser lesson or before its
+/// first scan.
+QString latest_laser_status_text(const RunHistory& history);
+
 }  // namespace legofeup::ui
