@@ -126,7 +126,7 @@ void add_initial_and_control_settings(std::vector<Setting>& s) {
          .label = in_words("pause"),
          .help = tr_noop("shuttle/piecewise/random: seconds stopped at each waypoint"),
          .page = SettingPage::Controller,
-         .applies = SettingApplies::Live,
+         .applies = SettingApplies::NextStart,
          .use = kEveryRun},
         [](auto& c) -> auto& { return c.routine.pause; }));
     s.push_back(whole(
@@ -135,7 +135,7 @@ void add_initial_and_control_settings(std::vector<Setting>& s) {
          .label = in_words("random points"),
          .help = tr_noop("how many random places to visit (1 … 100)"),
          .page = SettingPage::Controller,
-         .applies = SettingApplies::Live,
+         .applies = SettingApplies::NextStart,
          .use = kEveryRun},
         [](auto& c) -> auto& { return c.routine.random_points; }));
     s.push_back(real(
@@ -262,7 +262,7 @@ void add_initial_and_control_settings(std::vector<Setting>& s) {
          .help =
              tr_noop("rectangle: lower-left corner [x, y] where each lap starts, heading +x, m"),
          .page = SettingPage::Controller,
-         .applies = SettingApplies::Live,
+         .applies = SettingApplies::NextStart,
          .use = kEveryRun},
         [](auto& c) -> auto& { return c.routine.rectangle_corner; }));
     s.push_back(point(
@@ -272,7 +272,7 @@ void add_initial_and_control_settings(std::vector<Setting>& s) {
          .help =
              tr_noop("rectangle: [width along x, height along y], m (driven counter-clockwise)"),
          .page = SettingPage::Controller,
-         .applies = SettingApplies::Live,
+         .applies = SettingApplies::NextStart,
          .use = kEveryRun},
         [](auto& c) -> auto& { return c.routine.rectangle_size; }));
     s.push_back(real(

@@ -178,12 +178,15 @@ TEST(SettingTable, TheLoopsSettingsApplyLiveTheStartsWait) {
           "calibration.gyro_offset", "simulator.wheel_diameter_ratio", "simulator.ir_noise"}) {
         EXPECT_TRUE(live(key)) << key;
     }
-    // The routine's shape, the run's length, the world, the seed, the starting belief, the
-    // simulated robot's body and timing and its sensors: at the next start.
-    for (const char* key : {"control.routine", "control.line_from", "control.circle_radius",
-                            "control.goto_x", "seed", "laps", "world", "initial.var_x",
-                            "simulator.mass", "simulator.ir_model", "beacon_scanner.enabled",
-                            "laser_scanner.enabled", "laser_scanner.beam_count", "kidnap.time"}) {
+    // The routine's shape (the loop builds the controller once, at the start: its waypoints,
+    // pauses and random places), the run's length, the world, the seed, the starting belief,
+    // the simulated robot's body and timing and its sensors: at the next start.
+    for (const char* key :
+         {"control.routine", "control.line_from", "control.circle_radius", "control.goto_x",
+          "control.pause", "control.random_points", "control.rectangle_corner",
+          "control.rectangle_size", "seed", "laps", "world", "initial.var_x", "simulator.mass",
+          "simulator.ir_model", "beacon_scanner.enabled", "laser_scanner.enabled",
+          "laser_scanner.beam_count", "kidnap.time"}) {
         EXPECT_FALSE(live(key)) << key;
     }
 }
