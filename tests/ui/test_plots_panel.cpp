@@ -98,6 +98,16 @@ class PlotsPanelTest : public QObject {
                  last.snapshot.estimate(kY) - last.truth->pose.y);
         QCOMPARE(last_value(panel, Series::Nees), last.nees);
         QCOMPARE((panel.graph(Series::Px)->data()->constEnd() - 1)->key, last.snapshot.time);
+        // A step whose whole sample the history no longer keeps is drawn from its record.
+        constexpr int kDropped = 107;
+        QVERIFY(history.sample(kDropped) == nullptr);
+        const RunSample& old = one_lap_samples()[kDropped];
+        const auto at = [&](Series series) { return panel.graph(series)->data()->at(kDropped); };
+        QCOMPARE(at(Series::Px)->key, old.snapshot.time);
+        QCOMPARE(at(Series::Px)->value, old.snapshot.covariance(kX, kX));
+        QCOMPARE(at(Series::ErrorY)->value, old.snapshot.estimate(kY) - old.truth->pose.y);
+        QCOMPARE(at(Series::V2Command)->value, old.snapshot.wheels.left);
+        QCOMPARE(at(Series::Nees)->value, old.nees);
     }
 
     void ir_distances_have_gaps_out_of_range() {
