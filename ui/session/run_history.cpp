@@ -94,9 +94,10 @@ StepRecord make_step_record(const RunSample& sample) {
 }
 
 /// The trace.csv rows of the run, written by the CLI's writer as the steps come. A row is
-/// about 520 bytes of text; every kBlockBytes of rows are deflated (zlib's fastest level:
-/// about 3 ms a block here, once every ~25 s of a 20 Hz run) to about a third. Without the
-/// run's loop (a scene made by hand) only the header: the rows name its walls.
+/// roughly 500 bytes of text (estimated from its columns); every kBlockBytes of rows are
+/// deflated (zlib's fastest level, once every ~25 s of a 20 Hz run; the ratio is not measured
+/// yet). Without the run's loop (a scene made by hand) only the header: the rows name its
+/// walls.
 class RunHistory::TraceRows {
   public:
     explicit TraceRows(std::shared_ptr<const LoopConfig> loop)
