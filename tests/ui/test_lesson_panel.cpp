@@ -304,7 +304,7 @@ class LessonPanelTest : public QObject {
         // The panel judged the run shown.
         const report::StepOutcome* outcome = panel().progress().outcome("f");
         QVERIFY(outcome != nullptr);
-        QCOMPARE(outcome->metrics["steps"].get<std::size_t>(), samples.size());
+        QCOMPARE(outcome->metrics["steps"].get<std::size_t>(), steps.size());
         QCOMPARE(outcome->metrics["rms_position_error_m"].get<double>(), shown_rms);
         QCOMPARE(outcome->metrics["nees_inside_fraction"].get<double>(), shown_inside);
         const QString checks = window_->findChild<QLabel*>(QStringLiteral("stepChecks"))->text();

@@ -86,7 +86,7 @@ struct LaserNumbers {
 
 /// What the history keeps of every step, also once the step's sample is dropped: the numbers
 /// the plots draw (plot_series.cpp reads nothing else) and the arena's paths and covariance
-/// trail. ~390 bytes; make_step_record() fills it from a sample.
+/// trail. 432 bytes; make_step_record() fills it from a sample.
 struct StepRecord {
     double time = 0.0;  ///< the frame's time stamp, s
     Pose2 estimate;     ///< x̂, ŷ, θ̂
