@@ -20,11 +20,22 @@ using legofeup::ui::ArenaView;
 using legofeup::ui::RunHistory;
 using legofeup::ui::RunSample;
 
+using legofeup::ui::testing::LockstepRun;
+
+const LockstepRun& run_of(int laps) {
+    static std::map<int, LockstepRun> runs;
+    auto found = runs.find(laps);
+    if (found == runs.end()) {
+        found = runs.emplace(laps, legofeup::ui::testing::lockstep_run("f", laps)).first;
+    }
+    return found->second;
+}
+
 const RunHistory& history_of(int laps) {
     static std::map<int, RunHistory> histories;
     auto found = histories.find(laps);
     if (found == histories.end()) {
-        found = histories.emplace(laps, legofeup::ui::testing::lockstep_history("f", laps)).first;
+        found = histories.emplace(laps, legofeup::ui::testing::history_of(run_of(laps))).first;
     }
     return found->second;
 }
@@ -46,7 +57,7 @@ void BM_ArenaPaint(benchmark::State& state) {
         paint(view, image);
         benchmark::DoNotOptimize(image.constBits());
     }
-    state.counters["samples"] = static_cast<double>(history.samples().size());
+    state.counters["samples"] = static_cast<double>(history.size());
 }
 BENCHMARK(BM_ArenaPaint)->Arg(9)->Arg(22)->Unit(benchmark::kMillisecond);
 
@@ -70,12 +81,12 @@ BENCHMARK(BM_ArenaPaintFollowing)->Arg(9)->Arg(22)->Unit(benchmark::kMillisecond
 
 /// A run at 20 Hz: one sample arrives, the view takes it in and paints.
 void BM_ArenaAppendOneSampleAndPaint(benchmark::State& state) {
-    const RunHistory& full = history_of(static_cast<int>(state.range(0)));
-    const std::vector<RunSample>& all = full.samples();
+    const LockstepRun& full = run_of(static_cast<int>(state.range(0)));
+    const std::vector<RunSample>& all = full.samples;
     const std::size_t start = all.size() - 1000;  // the last 1,000 samples arrive one by one
     RunHistory history;
     const auto reset = [&] {
-        history.restart(full.scene());
+        history.restart(full.scene);
         history.append(std::vector<RunSample>(all.begin(), all.begin() + std::ptrdiff_t(start)));
     };
     reset();

@@ -19,17 +19,17 @@ using legofeup::ui::PlotsPanel;
 using legofeup::ui::RunHistory;
 using legofeup::ui::RunSample;
 
-const RunHistory& thirty_minutes() {
-    static const RunHistory history = legofeup::ui::testing::lockstep_history("f", 22);
-    return history;
+const legofeup::ui::testing::LockstepRun& thirty_minutes() {
+    static const auto run = legofeup::ui::testing::lockstep_run("f", 22);
+    return run;
 }
 
 /// The first `count` samples of the 30-minute run, as a history of their own.
 void fill(RunHistory& history, std::size_t count) {
-    const RunHistory& run = thirty_minutes();
-    history.restart(run.scene());
-    history.append(std::vector<RunSample>(run.samples().begin(),
-                                          run.samples().begin() + static_cast<long>(count)));
+    const auto& run = thirty_minutes();
+    history.restart(run.scene);
+    history.append(std::vector<RunSample>(run.samples.begin(),
+                                          run.samples.begin() + static_cast<long>(count)));
 }
 
 /// One frame: a new sample appended to a panel that holds ≈36,000, then the queued replots
@@ -38,7 +38,7 @@ void fill(RunHistory& history, std::size_t count) {
 void BM_PlotPanelFrame(benchmark::State& state) {
     const auto tab = static_cast<int>(state.range(0));
     const auto window = static_cast<double>(state.range(1));
-    const std::vector<RunSample>& samples = thirty_minutes().samples();
+    const std::vector<RunSample>& samples = thirty_minutes().samples;
     const std::size_t start = samples.size() - 1000;
 
     RunHistory history;
@@ -78,12 +78,12 @@ BENCHMARK(BM_PlotPanelFrame)
 
 /// Taking a whole 30-minute history in at once (opening a recorded run), without drawing.
 void BM_PlotPanelBulkLoad(benchmark::State& state) {
-    const RunHistory& history = thirty_minutes();
+    static const RunHistory history = legofeup::ui::testing::history_of(thirty_minutes());
     for (auto _ : state) {
-        PlotsPanel panel(history);  // the constructor takes in every sample
+        PlotsPanel panel(history);  // the constructor takes in every step
         benchmark::DoNotOptimize(&panel);
     }
-    state.counters["samples"] = static_cast<double>(history.samples().size());
+    state.counters["samples"] = static_cast<double>(history.size());
 }
 BENCHMARK(BM_PlotPanelBulkLoad)->Unit(benchmark::kMillisecond);
 

@@ -1,2 +1,3 @@
-# The session and its worker.
+# The session, its worker and its history.
 legofeup_add_ui_gtest(ui_live_run_test test_live_run.cpp)
+legofeup_add_ui_gtest(ui_run_history_test test_run_history.cpp)

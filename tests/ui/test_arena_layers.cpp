@@ -43,7 +43,7 @@ class RecordingLayer final : public ArenaLayer {
 
 /// The first 200 samples of the lap, localising as `localisation` says.
 RunHistory lap_as(Localisation localisation) {
-    std::vector<RunSample> samples(one_lap().samples().begin(), one_lap().samples().begin() + 200);
+    std::vector<RunSample> samples(one_lap_samples().begin(), one_lap_samples().begin() + 200);
     for (RunSample& sample : samples) {
         sample.snapshot.localisation = localisation;
     }

@@ -23,6 +23,7 @@ namespace legofeup::ui {
 namespace {
 
 using testing::one_lap;
+using testing::one_lap_samples;
 
 using testing::render;
 
@@ -81,7 +82,7 @@ class TestArenaView : public QObject {
     Q_OBJECT
 
   private slots:
-    void initTestCase() { QVERIFY(one_lap().samples().size() > 1000); }
+    void initTestCase() { QVERIFY(one_lap_samples().size() > 1000); }
 
     void wallMidpointsHaveTheWallColour() {
         const auto view = make_view(one_lap());
@@ -232,7 +233,7 @@ class TestArenaView : public QObject {
     }
 
     void samplesAppendedUpdatesCachesAndRepaintsLater() {
-        const std::vector<RunSample>& all = one_lap().samples();
+        const std::vector<RunSample>& all = one_lap_samples();
         const std::size_t half = all.size() / 2;
         RunHistory history;
         history.restart(one_lap().scene());

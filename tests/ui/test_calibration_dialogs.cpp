@@ -308,17 +308,18 @@ class CalibrationDialogsTest : public QObject {
         fast.speed = 5.0;
         session_->setLinkChoice(fast);
         session_->start();
-        QTRY_VERIFY_WITH_TIMEOUT(session_->history().samples().size() >= 30, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(session_->history().size() >= 30, 20000);
         QTRY_VERIFY(dialog.takeRearButton()->isEnabled());
         dialog.table()->setCurrentCell(2, 0);
         QTest::mouseClick(dialog.takeRearButton(), Qt::LeftButton);
         // The history only changes on this thread: it is what the click saw.
-        const auto& samples = session_->history().samples();
+        const RunHistory& history = session_->history();
         double sum = 0.0;
         int count = 0;
-        for (auto it = samples.rbegin(); it != samples.rend() && count < kAdcAverageFrames; ++it) {
-            if (!it->snapshot.frame_missing) {
-                sum += it->snapshot.ir[1].adc;
+        for (std::size_t i = history.size(); i > 0 && count < kAdcAverageFrames; --i) {
+            const LoopSnapshot& snapshot = history.sample(i - 1)->snapshot;  // recent: whole
+            if (!snapshot.frame_missing) {
+                sum += snapshot.ir[1].adc;
                 ++count;
             }
         }

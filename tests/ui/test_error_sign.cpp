@@ -56,7 +56,7 @@ BothViews run_apart(const Pose2& truth, const Pose2& belief) {
 }
 
 double gui_value(Series series, const RunSample& sample) {
-    return series_definition(series).value(sample).value();
+    return series_definition(series).value(make_step_record(sample)).value();
 }
 
 /// Every step: the GUI's x, y (m) and θ (°) errors equal the report's x, y (m) and θ (rad).

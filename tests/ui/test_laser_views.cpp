@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <qcustomplot.h>
@@ -36,6 +37,7 @@ namespace legofeup::ui {
 namespace {
 
 using testing::one_lap;
+using testing::one_lap_samples;
 
 constexpr int kPatienceMs = 30000;
 constexpr std::size_t kSamples = 200;        ///< the first 10 s of a wall lap
@@ -109,8 +111,8 @@ RunHistory laser_history(std::size_t samples_wanted = kSamples) {
     scene.laser.kidnap_recovery = true;
     scene.laser.recovery_covariance_factor = 10.0;
     std::vector<RunSample> samples(
-        one_lap().samples().begin(),
-        one_lap().samples().begin() + static_cast<std::ptrdiff_t>(samples_wanted));
+        one_lap_samples().begin(),
+        one_lap_samples().begin() + static_cast<std::ptrdiff_t>(samples_wanted));
     int mismatches = 0;
     for (std::size_t i = 0; i < samples.size(); ++i) {
         LoopSnapshot& s = samples[i].snapshot;
@@ -329,7 +331,7 @@ class TestLaserViews : public QObject {
     void theScanIsDrawnAtTheEstimatedScannerPose() {
         const RunHistory history = laser_history(kFirstMismatch);  // matched scans only
         const auto view = make_view(history);
-        const RunSample& scan_sample = history.samples()[kFirstMismatch - 2];  // the last scan
+        const RunSample& scan_sample = *history.sample(kFirstMismatch - 2);  // the last scan
         const StateVector& x = scan_sample.snapshot.estimate;
         // X̂ ⊕ mount by hand.
         const Pose2 scanner{x(kX) + kMount.x * std::cos(x(kTheta)),
@@ -370,7 +372,7 @@ class TestLaserViews : public QObject {
         const auto view = make_view(history);
         const LaserScanPoints points = view->laserScanPoints();
         QVERIFY(!points.matched);
-        const RunSample& scan_sample = history.samples()[kSamples - 2];
+        const RunSample& scan_sample = *history.sample(kSamples - 2);
         const StateVector& x = scan_sample.snapshot.estimate;
         const Pose2 scanner{x(kX) + kMount.x * std::cos(x(kTheta)),
                             x(kY) + kMount.x * std::sin(x(kTheta)), x(kTheta)};
@@ -403,7 +405,7 @@ class TestLaserViews : public QObject {
         // From sample 100 on, the robot is 0.8 m further up (the simulator's teleport count
         // says it was moved).
         RunHistory history = laser_history();
-        std::vector<RunSample> samples = history.samples();
+        std::vector<RunSample> samples = testing::whole_samples(history);
         for (std::size_t i = 100; i < samples.size(); ++i) {
             samples[i].truth->pose.y += 0.8;
             samples[i].truth->teleports = 1;
@@ -415,9 +417,9 @@ class TestLaserViews : public QObject {
         const QImage image = render(*view);
         const ArenaColors colors = arena_colors(view->palette());
         const QTransform t = view->worldToWidget();
-        const Pose2 from = history.samples()[99].truth->pose;
-        const Pose2 to = history.samples()[100].truth->pose;
-        const Pose2 later = history.samples()[150].truth->pose;
+        const Pose2 from = history.sample(99)->truth->pose;
+        const Pose2 to = history.sample(100)->truth->pose;
+        const Pose2 later = history.sample(150)->truth->pose;
         // The path after the jump is drawn (a 1 px antialiased line: at least half a pixel of
         // it), the jump itself is not (the floor or the grid there, ≥ 150 from the truth's
         // colour in some channel).
@@ -462,7 +464,7 @@ class TestLaserViews : public QObject {
         QCOMPARE(panel.graph(Series::LaserRecoveries)->data()->at(0)->value,
                  double(kRecoveryAfter));
         QCOMPARE(panel.graph(Series::LaserRecoveries)->data()->at(0)->key,
-                 history.samples()[kFirstMismatch + 2 * (kRecoveryAfter - 1)].snapshot.time);
+                 history.record(kFirstMismatch + 2 * (kRecoveryAfter - 1)).time);
         // The innovation of the applied updates: x, y in cm, θ in degrees.
         QCOMPARE(panel.graph(Series::LaserInnovationX)->dataCount(), 75);
         QCOMPARE(panel.graph(Series::LaserInnovationX)->data()->at(0)->value, 1.2);
@@ -496,7 +498,7 @@ class TestLaserViews : public QObject {
         QCOMPARE(kidnap.action()->shortcut(), QKeySequence(Qt::Key_F9));
 
         session.start();
-        QTRY_VERIFY_WITH_TIMEOUT(session.history().samples().size() >= 40, kPatienceMs);
+        QTRY_VERIFY_WITH_TIMEOUT(session.history().size() >= 40, kPatienceMs);
         QVERIFY(kidnap.action()->isEnabled());
         arena.fitArena();
         kidnap.action()->trigger();
@@ -508,7 +510,7 @@ class TestLaserViews : public QObject {
         const QPoint release = t.map(QPointF(-0.5, 0.1)).toPoint();
         bool invertible = false;
         const QPointF clicked = t.inverted(&invertible).map(QPointF(press));
-        const std::size_t before = session.history().samples().size();
+        const std::size_t before = session.history().size();
         QTest::mousePress(&arena, Qt::LeftButton, Qt::NoModifier, press);
         QTest::mouseMove(&arena, (press + release) / 2);
         QVERIFY(arena.pickingPose());
@@ -520,33 +522,31 @@ class TestLaserViews : public QObject {
         QVERIFY(messages.front().front().toString().startsWith(QStringLiteral("Kidnapped")));
 
         // The simulator's truth jumps there (its teleport count says so), the estimate not.
-        const auto kidnapped = [&session]() -> const RunSample* {
-            for (const RunSample& sample : session.history().samples()) {
-                if (sample.truth && sample.truth->teleports > 0) {
-                    return &sample;
+        const auto kidnapped = [&session]() -> std::optional<std::size_t> {
+            const RunHistory& history = session.history();
+            for (std::size_t i = 0; i < history.size(); ++i) {
+                if (history.record(i).has_truth && history.record(i).teleports > 0) {
+                    return i;
                 }
             }
-            return nullptr;
+            return std::nullopt;
         };
-        QTRY_VERIFY_WITH_TIMEOUT(kidnapped() != nullptr, kPatienceMs);
-        const RunSample& after = *kidnapped();
-        const std::size_t index =
-            static_cast<std::size_t>(&after - session.history().samples().data());
+        QTRY_VERIFY_WITH_TIMEOUT(kidnapped().has_value(), kPatienceMs);
+        const std::size_t index = *kidnapped();
+        const StepRecord& after = session.history().record(index);
         QVERIFY(index >= before);
         // At rest there, then the path controller drives on: within a period's motion.
-        QVERIFY2(
-            std::hypot(after.truth->pose.x - clicked.x(), after.truth->pose.y - clicked.y()) < 0.03,
-            qPrintable(QStringLiteral("truth (%1, %2), clicked (%3, %4)")
-                           .arg(after.truth->pose.x)
-                           .arg(after.truth->pose.y)
-                           .arg(clicked.x())
-                           .arg(clicked.y())));
-        QVERIFY(std::abs(wrap_angle(after.truth->pose.theta - kPi)) < 0.1);
-        const StateVector& estimate_before =
-            session.history().samples()[index - 1].snapshot.estimate;
-        QVERIFY(std::hypot(after.snapshot.estimate(kX) - estimate_before(kX),
-                           after.snapshot.estimate(kY) - estimate_before(kY))
-                < 0.05);
+        QVERIFY2(std::hypot(after.truth.x - clicked.x(), after.truth.y - clicked.y()) < 0.03,
+                 qPrintable(QStringLiteral("truth (%1, %2), clicked (%3, %4)")
+                                .arg(after.truth.x)
+                                .arg(after.truth.y)
+                                .arg(clicked.x())
+                                .arg(clicked.y())));
+        QVERIFY(std::abs(wrap_angle(after.truth.theta - kPi)) < 0.1);
+        const Pose2& estimate_before = session.history().record(index - 1).estimate;
+        QVERIFY(
+            std::hypot(after.estimate.x - estimate_before.x, after.estimate.y - estimate_before.y)
+            < 0.05);
         session.stop();
     }
 

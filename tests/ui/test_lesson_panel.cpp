@@ -51,13 +51,13 @@ constexpr double kTunedRunSeconds = 8.0;
 constexpr double kDistinct = 0.1;
 
 /// √(mean |x̂ − x|²) over the steps with a truth: the position error, by hand.
-double rms_position_error(const std::vector<RunSample>& samples) {
+double rms_position_error(const std::vector<StepRecord>& steps_shown) {
     double sum = 0.0;
     int steps = 0;
-    for (const RunSample& sample : samples) {
-        if (sample.truth) {
-            const double dx = sample.snapshot.estimate(0) - sample.truth->pose.x;
-            const double dy = sample.snapshot.estimate(1) - sample.truth->pose.y;
+    for (const StepRecord& step : steps_shown) {
+        if (step.has_truth) {
+            const double dx = step.estimate.x - step.truth.x;
+            const double dy = step.estimate.y - step.truth.y;
             sum += dx * dx + dy * dy;
             ++steps;
         }
@@ -66,14 +66,14 @@ double rms_position_error(const std::vector<RunSample>& samples) {
 }
 
 /// Share of the steps with a truth whose NEES lies in χ²(3)'s 95 % interval, by hand.
-double inside_fraction(const std::vector<RunSample>& samples) {
+double inside_fraction(const std::vector<StepRecord>& steps_shown) {
     constexpr double kLower = 0.2158;  // χ²(3) at 2.5 % and 97.5 % (tables)
     constexpr double kUpper = 9.3484;
     int inside = 0;
     int steps = 0;
-    for (const RunSample& sample : samples) {
-        if (sample.truth) {
-            inside += sample.nees >= kLower && sample.nees <= kUpper ? 1 : 0;
+    for (const StepRecord& step : steps_shown) {
+        if (step.has_truth) {
+            inside += step.nees >= kLower && step.nees <= kUpper ? 1 : 0;
             ++steps;
         }
     }
@@ -240,10 +240,9 @@ class LessonPanelTest : public QObject {
                  total);
 
         // The numbers are the run shown's: every step the window drew, measured by hand.
-        QCOMPARE(outcome->metrics["steps"].get<std::size_t>(),
-                 session_->history().samples().size());
+        QCOMPARE(outcome->metrics["steps"].get<std::size_t>(), session_->history().size());
         QCOMPARE(outcome->metrics["rms_position_error_m"].get<double>(),
-                 rms_position_error(session_->history().samples()));
+                 rms_position_error(session_->history().records()));
         // Another step is still folded.
         QVERIFY(panel().showStep(QStringLiteral("c")));
         QVERIFY(!panel().stepView().expectationShown());
@@ -290,9 +289,9 @@ class LessonPanelTest : public QObject {
         QCOMPARE(panel().progress().state("f"), StepState::Done);
 
         // The run shown, measured by hand from the window's own history…
-        const std::vector<RunSample>& samples = session_->history().samples();
-        const double shown_rms = rms_position_error(samples);
-        const double shown_inside = inside_fraction(samples);
+        const std::vector<StepRecord>& steps = session_->history().records();
+        const double shown_rms = rms_position_error(steps);
+        const double shown_inside = inside_fraction(steps);
         // …and what a lockstep re-run of the configuration it ended with gives.
         const report::StepOutcome rerun = report::run_step(step, session_->config());
         const double rerun_inside = rerun.metrics["nees_inside_fraction"].get<double>();
@@ -305,7 +304,7 @@ class LessonPanelTest : public QObject {
         // The panel judged the run shown.
         const report::StepOutcome* outcome = panel().progress().outcome("f");
         QVERIFY(outcome != nullptr);
-        QCOMPARE(outcome->metrics["steps"].get<std::size_t>(), samples.size());
+        QCOMPARE(outcome->metrics["steps"].get<std::size_t>(), steps.size());
         QCOMPARE(outcome->metrics["rms_position_error_m"].get<double>(), shown_rms);
         QCOMPARE(outcome->metrics["nees_inside_fraction"].get<double>(), shown_inside);
         const QString checks = window_->findChild<QLabel*>(QStringLiteral("stepChecks"))->text();

@@ -32,6 +32,7 @@ namespace legofeup::ui {
 namespace {
 
 using testing::one_lap;
+using testing::one_lap_samples;
 
 constexpr int kPatienceMs = 30000;
 constexpr std::size_t kSamples = 200;  ///< the first 10 s of the lap: along the bottom wall
@@ -75,8 +76,7 @@ double expected_bearing(const StateVector& x, const Beacon& beacon) {
 RunHistory beacon_history(bool shadow) {
     ArenaScene scene = one_lap().scene();
     scene.beacons = corner_beacons(scene.walls);
-    std::vector<RunSample> samples(one_lap().samples().begin(),
-                                   one_lap().samples().begin() + kSamples);
+    std::vector<RunSample> samples(one_lap_samples().begin(), one_lap_samples().begin() + kSamples);
     for (std::size_t i = 0; i < samples.size(); ++i) {
         LoopSnapshot& s = samples[i].snapshot;
         s.localisation = Localisation::Beacons;
@@ -117,8 +117,7 @@ constexpr double kGyroRateError = 0.01;        ///< rad/s
 /// The first kSamples of a wall lap with a gyroscope and a compass (fixed errors against
 /// the truth) and the wheel-speed estimates, as the 5-state fusion lesson has them.
 RunHistory sensor_history() {
-    std::vector<RunSample> samples(one_lap().samples().begin(),
-                                   one_lap().samples().begin() + kSamples);
+    std::vector<RunSample> samples(one_lap_samples().begin(), one_lap_samples().begin() + kSamples);
     for (RunSample& sample : samples) {
         LoopSnapshot& s = sample.snapshot;
         const GroundTruth& truth = *sample.truth;
@@ -330,7 +329,7 @@ class TestLessonViews : public QObject {
         const auto ukf = panel.graph(Series::UkfPositionError)->data();
         QCOMPARE(ekf->size(), static_cast<int>(kSamples));
         for (std::size_t i = 0; i < kSamples; i += 37) {
-            const RunSample& sample = history.samples()[i];
+            const RunSample& sample = *history.sample(i);  // 200 samples: all kept whole
             const StateVector& x = sample.snapshot.estimate;
             const Pose2& truth = sample.truth->pose;
             const auto k = static_cast<int>(i);
@@ -345,7 +344,8 @@ class TestLessonViews : public QObject {
         // Costs in µs, smoothed s ← s + (v − s)/20 from the first value.
         double ekf_cost = std::nan("");
         double ukf_cost = std::nan("");
-        for (const RunSample& sample : history.samples()) {
+        for (std::size_t i = 0; i < history.size(); ++i) {
+            const RunSample& sample = *history.sample(i);
             const double e = sample.snapshot.filter_seconds * 1e6;
             const double u = sample.snapshot.shadow_filter_seconds * 1e6;
             ekf_cost = std::isnan(ekf_cost) ? e : ekf_cost + (e - ekf_cost) / 20.0;
@@ -444,8 +444,8 @@ class TestLessonViews : public QObject {
         const RunHistory beacons = beacon_history(true);
         history.restart(beacons.scene());
         panel.historyRestarted();
-        history.append(std::vector<RunSample>(beacons.samples()));
-        panel.samplesAppended(0, static_cast<int>(history.samples().size()));
+        history.append(testing::whole_samples(beacons));
+        panel.samplesAppended(0, static_cast<int>(history.size()));
         QCOMPARE(tabs->currentIndex(), kBeaconTab);
     }
 
@@ -522,7 +522,7 @@ class TestLessonViews : public QObject {
         auto* kind = panel.findChild<QComboBox*>(QStringLiteral("filter.kind"));
         QVERIFY(kind != nullptr);
         session.start();
-        QTRY_VERIFY_WITH_TIMEOUT(session.history().samples().size() >= 20, kPatienceMs);
+        QTRY_VERIFY_WITH_TIMEOUT(session.history().size() >= 20, kPatienceMs);
         QCOMPARE(session.history().latest().snapshot.filter_kind, FilterKind::Ekf);
         const int ukf = kind->findText(QStringLiteral("ukf"));
         QVERIFY(ukf >= 0);
@@ -530,8 +530,8 @@ class TestLessonViews : public QObject {
         emit kind->activated(ukf);  // as a click on the item does
         QCOMPARE(session.config().lesson.kind, FilterKind::Ukf);
         QVERIFY(session.running());  // live: the run goes on
-        const std::size_t changed_at = session.history().samples().size();
-        QTRY_VERIFY_WITH_TIMEOUT(session.history().samples().size() > changed_at + 20, kPatienceMs);
+        const std::size_t changed_at = session.history().size();
+        QTRY_VERIFY_WITH_TIMEOUT(session.history().size() > changed_at + 20, kPatienceMs);
         QCOMPARE(session.history().latest().snapshot.filter_kind, FilterKind::Ukf);
         QCOMPARE(session.history().latest().snapshot.localisation, Localisation::Beacons);
         session.stop();

@@ -29,6 +29,7 @@
 #include "legofeup/ui/window/keyboard_driver.hpp"
 #include "legofeup/ui/window/main_window.hpp"
 #include "legofeup/ui/window/run_toolbar.hpp"
+#include "support/sample_recorder.hpp"
 
 using namespace legofeup;
 using namespace legofeup::ui;
@@ -39,12 +40,12 @@ constexpr int kPatienceMs = 30000;
 
 /// The mean ‖K‖ of the applied wall updates from sample `first` on, of at most `most` of them
 /// (`count`: how many there were).
-double mean_gain(const RunHistory& history, std::size_t first, int* count,
+double mean_gain(const std::vector<RunSample>& samples, std::size_t first, int* count,
                  int most = std::numeric_limits<int>::max()) {
     double sum = 0.0;
     *count = 0;
-    for (std::size_t i = first; i < history.samples().size() && *count < most; ++i) {
-        const WallUpdateReport& update = history.samples()[i].snapshot.update;
+    for (std::size_t i = first; i < samples.size() && *count < most; ++i) {
+        const WallUpdateReport& update = samples[i].snapshot.update;
         if (update.status == StepStatus::Applied) {
             sum += update.gain.norm();
             ++*count;
@@ -59,9 +60,9 @@ double smallest_eigenvalue(const Eigen::Matrix2d& S) {
         .minCoeff();
 }
 
-int applied_updates_since(const RunHistory& history, std::size_t first) {
+int applied_updates_since(const std::vector<RunSample>& samples, std::size_t first) {
     int count = 0;
-    mean_gain(history, first, &count);
+    mean_gain(samples, first, &count);
     return count;
 }
 
@@ -73,6 +74,7 @@ class MainWindowTest : public QObject {
   private:
     QTemporaryDir config_home_;
     std::unique_ptr<Session> session_;
+    std::unique_ptr<testing::SampleRecorder> recorded_;  ///< every sample of the run, whole
     std::unique_ptr<MainWindow> window_;
 
     /// Types `text` into the field of setting `key` and presses Enter.
@@ -87,7 +89,7 @@ class MainWindowTest : public QObject {
 
     void startAndWaitForSamples(std::size_t count) {
         window_->runToolBar().startAction()->trigger();
-        QTRY_VERIFY_WITH_TIMEOUT(session_->history().samples().size() >= count, kPatienceMs);
+        QTRY_VERIFY_WITH_TIMEOUT(session_->history().size() >= count, kPatienceMs);
     }
 
   private slots:
@@ -103,6 +105,7 @@ class MainWindowTest : public QObject {
         LinkChoice fast;
         fast.speed = 10.0;  // 200 control periods per second: the tests need a few laps' worth
         session_->setLinkChoice(fast);
+        recorded_ = std::make_unique<testing::SampleRecorder>(*session_);
         window_ = std::make_unique<MainWindow>(*session_);
         window_->resize(1400, 900);
         window_->show();
@@ -111,6 +114,7 @@ class MainWindowTest : public QObject {
 
     void cleanup() {
         window_.reset();
+        recorded_.reset();
         session_.reset();
     }
 
@@ -125,15 +129,14 @@ class MainWindowTest : public QObject {
         const double pxx = session_->history().latest().snapshot.covariance(0, 0);
         QCOMPARE(window_->covarianceView().cellText(0, 0), QString::number(pxx, 'e', 3));
         // Samples arrive in order, every one with the truth (the embedded simulator's).
-        const auto& samples = session_->history().samples();
+        const auto& samples = recorded_->samples();
         for (std::size_t i = 1; i < samples.size(); ++i) {
             QCOMPARE(samples[i].snapshot.step, samples[i - 1].snapshot.step + 1);
             QVERIFY(samples[i].truth.has_value());
         }
         window_->runToolBar().stopAction()->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(session_->phase(), RunPhase::Stopped, kPatienceMs);
-        const std::size_t kept = samples.size();
-        QVERIFY(kept >= 100);  // stopping keeps the history
+        QVERIFY(session_->history().size() >= 100);  // stopping keeps the history
         window_->runToolBar().resetAction()->trigger();
         QCOMPARE(session_->phase(), RunPhase::Idle);
         QVERIFY(session_->history().empty());
@@ -141,9 +144,9 @@ class MainWindowTest : public QObject {
 
     void raisingRMidRunMakesTheWallUpdatesBarelyMoveTheEstimate() {
         startAndWaitForSamples(10);
-        QTRY_VERIFY_WITH_TIMEOUT(applied_updates_since(session_->history(), 0) >= 10, kPatienceMs);
+        QTRY_VERIFY_WITH_TIMEOUT(applied_updates_since(recorded_->samples(), 0) >= 10, kPatienceMs);
         int before_count = 0;
-        const double before = mean_gain(session_->history(), 0, &before_count);
+        const double before = mean_gain(recorded_->samples(), 0, &before_count);
         // R = 1000 m²: the IR readings are worth nothing next to the prediction.
         enter("filter.r11", QStringLiteral("1e3"));
         enter("filter.r22", QStringLiteral("1e3"));
@@ -158,7 +161,7 @@ class MainWindowTest : public QObject {
         // S is at least about 1000·σ_min(J)² (hundreds). So the first update whose S has
         // its smallest eigenvalue above 100 is the first with both.
         const auto first_with_new_r = [this]() -> std::size_t {
-            const auto& samples = session_->history().samples();
+            const auto& samples = recorded_->samples();
             for (std::size_t i = 0; i < samples.size(); ++i) {
                 const WallUpdateReport& update = samples[i].snapshot.update;
                 if (update.status == StepStatus::Applied
@@ -168,15 +171,14 @@ class MainWindowTest : public QObject {
             }
             return samples.size();
         };
-        QTRY_VERIFY_WITH_TIMEOUT(first_with_new_r() < session_->history().samples().size(),
-                                 kPatienceMs);
+        QTRY_VERIFY_WITH_TIMEOUT(first_with_new_r() < recorded_->samples().size(), kPatienceMs);
         const std::size_t changed_at = first_with_new_r();
-        QTRY_VERIFY_WITH_TIMEOUT(applied_updates_since(session_->history(), changed_at) >= 10,
+        QTRY_VERIFY_WITH_TIMEOUT(applied_updates_since(recorded_->samples(), changed_at) >= 10,
                                  kPatienceMs);
         // The first ten only: with the walls ignored P keeps growing, and K ≈ P·Hᵀ·S⁻¹ with
         // it, so a slow test machine would otherwise average in later gains.
         int after_count = 0;
-        const double after = mean_gain(session_->history(), changed_at, &after_count, 10);
+        const double after = mean_gain(recorded_->samples(), changed_at, &after_count, 10);
         QVERIFY2(after < before * 1e-2,
                  qPrintable(QStringLiteral("gain before %1, after %2").arg(before).arg(after)));
     }
@@ -246,9 +248,8 @@ class MainWindowTest : public QObject {
         QTest::keyPress(window_.get(), Qt::Key_Up);
         const double v_ref = session_->resolved().loop.motion.v_ref;
         QCOMPARE(window_->keyboard().speed(), v_ref);
-        const std::size_t pressed_at = session_->history().samples().size();
-        QTRY_VERIFY_WITH_TIMEOUT(session_->history().samples().size() > pressed_at + 60,
-                                 kPatienceMs);
+        const std::size_t pressed_at = session_->history().size();
+        QTRY_VERIFY_WITH_TIMEOUT(session_->history().size() > pressed_at + 60, kPatienceMs);
         const RunSample& moving = session_->history().latest();
         QCOMPARE(moving.snapshot.velocity.v, v_ref);
         QVERIFY(std::abs(moving.truth->velocity.v - v_ref) < 0.02);  // the robot drives
@@ -276,7 +277,7 @@ class MainWindowTest : public QObject {
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = file.readAll().split('\n');
         QCOMPARE(lines.front(), QByteArray(lessons::trace_csv_header()));
-        QCOMPARE(static_cast<std::size_t>(lines.size() - 2), session_->history().samples().size());
+        QCOMPARE(static_cast<std::size_t>(lines.size() - 2), session_->history().size());
 
         enter("filter.q22", QStringLiteral("3e-6"));
         const QString config = out.filePath(QStringLiteral("mine.toml"));

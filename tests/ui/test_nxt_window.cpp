@@ -79,7 +79,7 @@ class NxtWindowTest : public QObject {
         QTRY_VERIFY(window_->runToolBar().nxtButton()->isVisible());  // laid out lazily
         QCOMPARE(window_->runToolBar().nxtButton()->text(), QStringLiteral("Emulated brick…"));
         window_->runToolBar().startAction()->trigger();
-        QTRY_VERIFY_WITH_TIMEOUT(session_->history().samples().size() >= 30, kPatienceMs);
+        QTRY_VERIFY_WITH_TIMEOUT(session_->history().size() >= 30, kPatienceMs);
         QCOMPARE(session_->phase(), RunPhase::Running);
         QVERIFY(session_->history().latest().truth.has_value());  // the emulator's simulator
         QVERIFY(!window_->plots().showsNoTruth());
@@ -113,7 +113,7 @@ class NxtWindowTest : public QObject {
         choice.nxt_address = address;
         session_->setLinkChoice(choice);
         window_->runToolBar().startAction()->trigger();
-        QTRY_VERIFY_WITH_TIMEOUT(session_->history().samples().size() >= 5, kPatienceMs);
+        QTRY_VERIFY_WITH_TIMEOUT(session_->history().size() >= 5, kPatienceMs);
         // Nobody knows a real robot's pose: samples without truth, plots say so.
         QVERIFY(!session_->history().latest().truth.has_value());
         QVERIFY(std::isnan(session_->history().latest().nees));
@@ -130,12 +130,12 @@ class NxtWindowTest : public QObject {
         QVERIFY2(statusBarRobotLine()->text().startsWith(QStringLiteral("NXT: Failed · 7.80 V")),
                  qPrintable(statusBarRobotLine()->text()));
         testing::save_screenshot(*window_, "nxt-failed");
-        const std::size_t before = session_->history().samples().size();
+        const std::size_t before = session_->history().size();
         QVERIFY(before >= 5);
 
         QTest::mouseClick(robot.reconnectButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(session_->phase(), RunPhase::Running, kPatienceMs);
-        QTRY_VERIFY_WITH_TIMEOUT(session_->history().samples().size() >= 20, kPatienceMs);
+        QTRY_VERIFY_WITH_TIMEOUT(session_->history().size() >= 20, kPatienceMs);
         QTRY_COMPARE(robot.stateLabel()->text(), QStringLiteral("Connected"));
         QVERIFY(!robot.reconnectButton()->isVisible());
         QVERIFY(!window_->reconnectAction()->isEnabled());
@@ -156,7 +156,7 @@ class NxtWindowTest : public QObject {
         choice.robot_profile = file;
         session_->setLinkChoice(choice);
         session_->start();
-        QTRY_VERIFY_WITH_TIMEOUT(session_->history().samples().size() >= 10, kPatienceMs);
+        QTRY_VERIFY_WITH_TIMEOUT(session_->history().size() >= 10, kPatienceMs);
         // The IR distances are eq. 2 with the profile's constants, not the configuration's.
         const IrSample& ir = session_->history().latest().snapshot.ir[0];
         QCOMPARE(ir.reading.distance, distance_from_adc(ir.adc, profile.ir_curve).distance);
@@ -166,8 +166,8 @@ class NxtWindowTest : public QObject {
         QCOMPARE(session_->changeSetting(*lessons::find_setting_by_key("filter.r11"),
                                          lessons::SettingValue(2e-4)),
                  QString());
-        const std::size_t changed = session_->history().samples().size();
-        QTRY_VERIFY_WITH_TIMEOUT(session_->history().samples().size() >= changed + 5, kPatienceMs);
+        const std::size_t changed = session_->history().size();
+        QTRY_VERIFY_WITH_TIMEOUT(session_->history().size() >= changed + 5, kPatienceMs);
         const IrSample& later = session_->history().latest().snapshot.ir[0];
         QCOMPARE(later.reading.distance, distance_from_adc(later.adc, profile.ir_curve).distance);
         // A profile that does not load is refused before anything starts.

@@ -27,6 +27,8 @@ using legofeup::ui::Series;
 namespace {
 
 using legofeup::ui::testing::one_lap;
+using legofeup::ui::testing::one_lap_run;
+using legofeup::ui::testing::one_lap_samples;
 
 int size_of(const PlotsPanel& panel, Series series) {
     return panel.graph(series)->dataCount();
@@ -63,15 +65,15 @@ class PlotsPanelTest : public QObject {
 
   private slots:
     void initTestCase() {
-        QVERIFY2(one_lap().samples().size() > 1000,
-                 qPrintable(QString::number(one_lap().samples().size())));
+        QVERIFY2(one_lap_samples().size() > 1000,
+                 qPrintable(QString::number(one_lap_samples().size())));
     }
 
     void every_graph_has_a_point_per_sample() {
         const RunHistory& history = one_lap();
         PlotsPanel panel(history);
         panel.historyRestarted();
-        const int n = static_cast<int>(history.samples().size());
+        const int n = static_cast<int>(history.size());
         panel.samplesAppended(0, n);
 
         for (Series series :
@@ -96,12 +98,22 @@ class PlotsPanelTest : public QObject {
                  last.snapshot.estimate(kY) - last.truth->pose.y);
         QCOMPARE(last_value(panel, Series::Nees), last.nees);
         QCOMPARE((panel.graph(Series::Px)->data()->constEnd() - 1)->key, last.snapshot.time);
+        // A step whose whole sample the history no longer keeps is drawn from its record.
+        constexpr int kDropped = 107;
+        QVERIFY(history.sample(kDropped) == nullptr);
+        const RunSample& old = one_lap_samples()[kDropped];
+        const auto at = [&](Series series) { return panel.graph(series)->data()->at(kDropped); };
+        QCOMPARE(at(Series::Px)->key, old.snapshot.time);
+        QCOMPARE(at(Series::Px)->value, old.snapshot.covariance(kX, kX));
+        QCOMPARE(at(Series::ErrorY)->value, old.snapshot.estimate(kY) - old.truth->pose.y);
+        QCOMPARE(at(Series::V2Command)->value, old.snapshot.wheels.left);
+        QCOMPARE(at(Series::Nees)->value, old.nees);
     }
 
     void ir_distances_have_gaps_out_of_range() {
         const RunHistory& history = one_lap();
         PlotsPanel panel(history);
-        const auto& samples = history.samples();
+        const auto& samples = one_lap_samples();
         for (int sensor = 0; sensor < 2; ++sensor) {
             const Series series = sensor == 0 ? Series::Ds1 : Series::Ds2;
             int in_range = 0;
@@ -129,7 +141,7 @@ class PlotsPanelTest : public QObject {
         PlotsPanel panel(history);
         int updates = 0;
         double last_nis = 0.0;
-        for (const RunSample& sample : history.samples()) {
+        for (const RunSample& sample : one_lap_samples()) {
             const auto& update = sample.snapshot.update;
             if (update.status != StepStatus::NotAttempted && std::isfinite(update.nis)) {
                 ++updates;
@@ -159,15 +171,16 @@ class PlotsPanelTest : public QObject {
 
     void two_batches_give_the_same_data_as_one() {
         const RunHistory& history = one_lap();
-        const int n = static_cast<int>(history.samples().size());
+        const std::vector<RunSample>& samples = one_lap_samples();
+        const int n = static_cast<int>(samples.size());
         PlotsPanel whole(history);
         RunHistory growing;
         growing.restart(history.scene());
         PlotsPanel grown(growing);
         const int split = 1234;
-        growing.append({history.samples().begin(), history.samples().begin() + split});
+        growing.append({samples.begin(), samples.begin() + split});
         grown.samplesAppended(0, split);
-        growing.append({history.samples().begin() + split, history.samples().end()});
+        growing.append({samples.begin() + split, samples.end()});
         grown.samplesAppended(split, n - split);
 
         for (int s = 0; s < legofeup::ui::kSeriesCount; ++s) {
@@ -194,12 +207,12 @@ class PlotsPanelTest : public QObject {
         RunHistory growing;
         growing.restart(history.scene());
         PlotsPanel panel(growing);
-        growing.append({history.samples().begin(), history.samples().begin() + 100});
+        growing.append({one_lap_samples().begin(), one_lap_samples().begin() + 100});
         panel.samplesAppended(0, 50);
         panel.samplesAppended(0, 50);   // repeated: nothing new
         panel.samplesAppended(60, 40);  // 50…59 were never announced: taken too
         QCOMPARE(panel.graph(Series::Px)->dataCount(), 100);
-        QCOMPARE(panel.graph(Series::Px)->data()->at(99)->key, history.samples()[99].snapshot.time);
+        QCOMPARE(panel.graph(Series::Px)->data()->at(99)->key, one_lap_samples()[99].snapshot.time);
     }
 
     void consistency_bounds_are_the_chi_square_quantiles() {
@@ -234,7 +247,7 @@ class PlotsPanelTest : public QObject {
     void the_time_window_follows_the_latest_sample() {
         const RunHistory& history = one_lap();
         PlotsPanel panel(history);
-        const double first = history.samples().front().snapshot.time;
+        const double first = history.record(0).time;
         const double last = history.latest().snapshot.time;
         panel.setTimeWindow(30.0);
         QCOMPARE(panel.timeWindow(), 30.0);
@@ -302,13 +315,13 @@ class PlotsPanelTest : public QObject {
         history.restart(lap.scene());
         const double duration = lap.latest().snapshot.time + 0.05;
         for (int copy = 0; copy < 4; ++copy) {
-            std::vector<RunSample> shifted = lap.samples();
+            std::vector<RunSample> shifted = one_lap_samples();
             for (RunSample& sample : shifted) {
                 sample.snapshot.time += copy * duration;
             }
             history.append(std::move(shifted));
         }
-        QVERIFY(history.samples().size() > PlotsPanel::kDenseView);
+        QVERIFY(history.size() > PlotsPanel::kDenseView);
         PlotsPanel panel(history);
         const auto filled = [&](Series band) {
             return panel.graph(band)->brush().style() != Qt::NoBrush
@@ -330,7 +343,7 @@ class PlotsPanelTest : public QObject {
     }
 
     void restart_clears_every_graph() {
-        RunHistory history = one_lap();
+        RunHistory history = legofeup::ui::testing::history_of(one_lap_run());
         PlotsPanel panel(history);
         QVERIFY(panel.graph(Series::Px)->dataCount() > 0);
         history.restart(history.scene());
@@ -351,7 +364,7 @@ class PlotsPanelTest : public QObject {
         QSignalSpy replots(panel.plot(PlotKind::Covariance), &QCustomPlot::afterReplot);
         QSignalSpy hidden_replots(panel.plot(PlotKind::Nis), &QCustomPlot::afterReplot);
         const std::size_t frames = panel.frameStats().summary().total;
-        const auto& samples = one_lap().samples();
+        const auto& samples = one_lap_samples();
         for (int i = 0; i < 5; ++i) {
             history.append({samples[static_cast<std::size_t>(i)]});
             panel.samplesAppended(i, 1);

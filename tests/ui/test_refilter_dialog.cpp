@@ -245,7 +245,7 @@ class RefilterDialogTest : public QObject {
 
         const lessons::RunLog log = lessons::load_run_log(session.recordingFile().toStdString());
         QVERIFY(log.ended);  // the run finished: the log has its end line
-        QCOMPARE(log.records.size(), session.history().samples().size());
+        QCOMPARE(log.records.size(), session.history().size());
         QCOMPARE(log.records.back().estimate, session.history().latest().snapshot.estimate);
 
         RefilterDialog* dialog = window.openRefilter();

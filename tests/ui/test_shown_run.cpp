@@ -109,8 +109,8 @@ TEST(ShownRun, AFailedCheckOnAMetricMeasuredWithoutTruthIsJudged) {
 }
 
 TEST(ShownRun, ALongRunPlotsAtMostTwiceTheReportsStepsEvenlySpacedAndItsLast) {
-    const RunHistory& history = ui::testing::lockstep_history("f", 2);  // about 3,400 steps
-    const std::vector<RunSample>& samples = history.samples();
+    const std::vector<RunSample> samples =
+        ui::testing::lockstep_run("f", 2).samples;  // about 3,400 steps
     const std::size_t n = samples.size();
     const std::size_t most = 2 * kShownRunPlotSteps + 1;
     ASSERT_GT(n, 4 * most);  // the stride doubles at least twice

@@ -34,6 +34,12 @@ CovarianceEllipse sample_ellipse(const RunSample& sample, EllipseConfidence leve
     return covariance_ellipse(Vector2(x(kX), x(kY)), position_block, level);
 }
 
+CovarianceEllipse sample_ellipse(const StepRecord& record, EllipseConfidence level) {
+    Eigen::Matrix2d position_block;
+    position_block << record.pxx, record.pxy, record.pxy, record.pyy;
+    return covariance_ellipse(position_of(record.estimate), position_block, level);
+}
+
 QPolygonF ellipse_qpolygon(const CovarianceEllipse& ellipse, int count) {
     QPolygonF polygon;
     const std::vector<Vector2> points = ellipse_polygon(ellipse, count);
@@ -88,8 +94,7 @@ void ArenaCache::build_scene(const RunHistory& history) {
     const ArenaScene& scene = history.scene();
     Vector2 start = Vector2::Zero();
     if (!history.empty()) {
-        const StateVector& x = history.samples().front().snapshot.estimate;
-        start = Vector2(x(kX), x(kY));
+        start = position_of(history.record(0).estimate);
     } else if (!scene.path.empty()) {
         if (const auto* line = std::get_if<LineSegment>(&scene.path.back())) {
             start = line->to;  // a closed path starts where it ends
@@ -133,38 +138,37 @@ void ArenaCache::rebuild(const RunHistory& history, EllipseConfidence level) {
 }
 
 void ArenaCache::update(const RunHistory& history, EllipseConfidence level) {
-    if (history.epoch() != epoch_ || history.samples().size() < seen_) {
+    if (history.epoch() != epoch_ || history.size() < seen_) {
         rebuild(history, level);
         return;
     }
-    const std::vector<RunSample>& samples = history.samples();
-    if (seen_ == 0 && !samples.empty()) {
+    const std::vector<StepRecord>& records = history.records();
+    if (seen_ == 0 && !records.empty()) {
         build_scene(history);  // arcs start where the robot starts
     }
-    for (std::size_t i = seen_; i < samples.size(); ++i) {
-        take_sample(samples[i], i, level);
+    for (std::size_t i = seen_; i < records.size(); ++i) {
+        take_sample(records[i], i, level);
     }
-    seen_ = samples.size();
+    seen_ = records.size();
 }
 
-void ArenaCache::take_sample(const RunSample& sample, std::size_t index, EllipseConfidence level) {
-    const LoopSnapshot& snapshot = sample.snapshot;
-    const QPointF estimate(snapshot.estimate(kX), snapshot.estimate(kY));
+void ArenaCache::take_sample(const StepRecord& record, std::size_t index, EllipseConfidence level) {
+    const QPointF estimate(record.estimate.x, record.estimate.y);
     estimate_.append(estimate);
-    odometry_.append({snapshot.odometry_pose.x, snapshot.odometry_pose.y});
+    odometry_.append({record.odometry.x(), record.odometry.y()});
     data_bounds_.add(estimate);
-    if (sample.truth) {
-        if (sample.truth->teleports != truth_teleports_ && truth_.size() > 0) {
+    if (record.has_truth) {
+        if (record.teleports != truth_teleports_ && truth_.size() > 0) {
             // Kidnapped (or displaced) since the last truth: the path starts again there.
             truth_before_jumps_.push_back(truth_.points());
             truth_.clear();
         }
-        truth_teleports_ = sample.truth->teleports;
-        truth_.append({sample.truth->pose.x, sample.truth->pose.y});
+        truth_teleports_ = record.teleports;
+        truth_.append({record.truth.x, record.truth.y});
     }
-    if (snapshot.time >= next_trail_time_) {
-        next_trail_time_ = snapshot.time + kTrailPeriod;
-        const CovarianceEllipse ellipse = sample_ellipse(sample, level);
+    if (record.time >= next_trail_time_) {
+        next_trail_time_ = record.time + kTrailPeriod;
+        const CovarianceEllipse ellipse = sample_ellipse(record, level);
         if (ellipse.valid) {
             TrailEllipse trail{index, ellipse_qpolygon(ellipse, kTrailPoints)};
             trail_path_.addPolygon(trail.polygon);
@@ -174,13 +178,13 @@ void ArenaCache::take_sample(const RunSample& sample, std::size_t index, Ellipse
 }
 
 void ArenaCache::set_confidence(const RunHistory& history, EllipseConfidence level) {
-    const std::vector<RunSample>& samples = history.samples();
+    const std::vector<StepRecord>& records = history.records();
     trail_path_.clear();
     for (TrailEllipse& trail : trail_) {
-        if (trail.sample >= samples.size()) {
+        if (trail.sample >= records.size()) {
             continue;
         }
-        const CovarianceEllipse ellipse = sample_ellipse(samples[trail.sample], level);
+        const CovarianceEllipse ellipse = sample_ellipse(records[trail.sample], level);
         trail.polygon = ellipse_qpolygon(ellipse, kTrailPoints);
         trail_path_.addPolygon(trail.polygon);
     }

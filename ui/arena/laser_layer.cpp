@@ -28,12 +28,14 @@ QPolygonF world_points(const LaserScan& scan, const ScanGeometry& geometry,
 }  // namespace
 
 const RunSample* latest_scan_sample(const RunHistory& history, std::size_t look_back) {
-    const std::vector<RunSample>& samples = history.samples();
-    const std::size_t stop = samples.size() > look_back ? samples.size() - look_back : 0;
-    for (std::size_t i = samples.size(); i > stop; --i) {
-        const LaserUpdate& laser = samples[i - 1].snapshot.laser;
-        if (laser.scan_received && !laser.wrong_beam_count) {
-            return &samples[i - 1];
+    // Within the recent steps, whose samples the history keeps whole.
+    const std::size_t size = history.size();
+    const std::size_t stop = size > look_back ? size - look_back : 0;
+    for (std::size_t i = size; i > stop; --i) {
+        const RunSample* sample = history.sample(i - 1);
+        if (sample != nullptr && sample->snapshot.laser.scan_received
+            && !sample->snapshot.laser.wrong_beam_count) {
+            return sample;
         }
     }
     return nullptr;

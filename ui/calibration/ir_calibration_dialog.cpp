@@ -395,12 +395,14 @@ bool IrCalibrationDialog::takeCurrentAdc(int sensor) {
         showProblem(tr("No run is live: start one (with the robot facing the target) first."));
         return false;
     }
-    const std::vector<RunSample>& samples = history.samples();
     double sum = 0.0;
     int count = 0;
-    for (auto it = samples.rbegin(); it != samples.rend() && count < kAdcAverageFrames; ++it) {
-        if (!it->snapshot.frame_missing) {
-            sum += it->snapshot.ir[static_cast<std::size_t>(sensor)].adc;
+    // The latest steps, which the history keeps whole.
+    for (std::size_t i = history.size(); i > history.recent_begin() && count < kAdcAverageFrames;
+         --i) {
+        const LoopSnapshot& snapshot = history.sample(i - 1)->snapshot;
+        if (!snapshot.frame_missing) {
+            sum += snapshot.ir[static_cast<std::size_t>(sensor)].adc;
             ++count;
         }
     }

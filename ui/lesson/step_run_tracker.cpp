@@ -35,9 +35,12 @@ void StepRunTracker::samplesAppended(int first, int count) {
     if (running_.empty()) {
         return;
     }
-    const std::vector<RunSample>& samples = session_.history().samples();
+    // The latest batch: the history keeps its samples whole.
+    const RunHistory& history = session_.history();
     for (int i = first; i < first + count; ++i) {
-        shown_.add(samples[static_cast<std::size_t>(i)]);
+        if (const RunSample* sample = history.sample(static_cast<std::size_t>(i))) {
+            shown_.add(*sample);
+        }
     }
 }
 

@@ -36,90 +36,85 @@ constexpr int kColourGated = 1;
 /// µs per step: a ~1 s exponential average at 20 Hz (a = 1/20).
 constexpr double kCostSmoothing = 0.05;
 
-double variance(const RunSample& s, int i) {
-    return s.snapshot.covariance(i, i);
+double variance(const StepRecord& s, int i) {
+    return i == kX ? s.pxx : i == kY ? s.pyy : s.ptt;
 }
-double sigma(const RunSample& s, int i) {
+double sigma(const StepRecord& s, int i) {
     return std::sqrt(std::max(variance(s, i), 0.0));
 }
 /// Component `i` of x̃ = x̂ − x (pose_error.hpp): m, or rad for θ; NaN without truth.
-double pose_error_component(const RunSample& s, int i) {
-    if (!s.truth) {
+double pose_error_component(const StepRecord& s, int i) {
+    if (!s.has_truth) {
         return kNaN;
     }
-    return pose_error(s.snapshot.estimate, s.truth->pose).vector()(i);
-}
-/// The measured IR distance, m; NaN (a gap) when the reading is out of range.
-double ir_distance(const RunSample& s, int sensor) {
-    const IrDistance& reading = s.snapshot.ir[static_cast<std::size_t>(sensor)].reading;
-    return reading.in_range() ? reading.distance : kNaN;
+    return pose_error(s.estimate, s.truth).vector()(i);
 }
 
-std::optional<double> px(const RunSample& s) {
+std::optional<double> px(const StepRecord& s) {
     return variance(s, kX);
 }
-std::optional<double> py(const RunSample& s) {
+std::optional<double> py(const StepRecord& s) {
     return variance(s, kY);
 }
-std::optional<double> ptheta(const RunSample& s) {
+std::optional<double> ptheta(const StepRecord& s) {
     return variance(s, kTheta);
 }
-std::optional<double> sigma_x_upper(const RunSample& s) {
+std::optional<double> sigma_x_upper(const StepRecord& s) {
     return sigma(s, kX);
 }
-std::optional<double> sigma_x_lower(const RunSample& s) {
+std::optional<double> sigma_x_lower(const StepRecord& s) {
     return -sigma(s, kX);
 }
-std::optional<double> sigma_y_upper(const RunSample& s) {
+std::optional<double> sigma_y_upper(const StepRecord& s) {
     return sigma(s, kY);
 }
-std::optional<double> sigma_y_lower(const RunSample& s) {
+std::optional<double> sigma_y_lower(const StepRecord& s) {
     return -sigma(s, kY);
 }
-std::optional<double> error_x(const RunSample& s) {
+std::optional<double> error_x(const StepRecord& s) {
     return pose_error_component(s, kX);
 }
-std::optional<double> error_y(const RunSample& s) {
+std::optional<double> error_y(const StepRecord& s) {
     return pose_error_component(s, kY);
 }
-std::optional<double> sigma_theta_upper(const RunSample& s) {
+std::optional<double> sigma_theta_upper(const StepRecord& s) {
     return radians_to_degrees(sigma(s, kTheta));
 }
-std::optional<double> sigma_theta_lower(const RunSample& s) {
+std::optional<double> sigma_theta_lower(const StepRecord& s) {
     return -radians_to_degrees(sigma(s, kTheta));
 }
 /// θ̂ − θ wrapped to (−180°, 180°]: an estimate of π − 0.01 against a truth of −π + 0.01
 /// is 0.02 rad off, not 2π − 0.02.
-std::optional<double> error_theta(const RunSample& s) {
+std::optional<double> error_theta(const StepRecord& s) {
     return radians_to_degrees(pose_error_component(s, kTheta));
 }
-std::optional<double> v1_true(const RunSample& s) {
-    return s.truth ? s.truth->wheel_surface_speeds.right : kNaN;
+std::optional<double> v1_true(const StepRecord& s) {
+    return s.has_truth ? s.true_wheel_speeds.right : kNaN;
 }
-std::optional<double> v2_true(const RunSample& s) {
-    return s.truth ? s.truth->wheel_surface_speeds.left : kNaN;
+std::optional<double> v2_true(const StepRecord& s) {
+    return s.has_truth ? s.true_wheel_speeds.left : kNaN;
 }
-std::optional<double> v1_command(const RunSample& s) {
-    return s.snapshot.wheels.right;
+std::optional<double> v1_command(const StepRecord& s) {
+    return s.wheels.right;
 }
-std::optional<double> v2_command(const RunSample& s) {
-    return s.snapshot.wheels.left;
+std::optional<double> v2_command(const StepRecord& s) {
+    return s.wheels.left;
 }
-std::optional<double> ds1(const RunSample& s) {
-    return ir_distance(s, kFrontSensor);
+/// The measured IR distance, m; NaN (a gap) when the reading is out of range.
+std::optional<double> ds1(const StepRecord& s) {
+    return s.ir_distance[kFrontSensor];
 }
-std::optional<double> ds2(const RunSample& s) {
-    return ir_distance(s, kRearSensor);
+std::optional<double> ds2(const StepRecord& s) {
+    return s.ir_distance[kRearSensor];
 }
 /// One point per wall update that computed an NIS (applied or rejected by the gate).
-std::optional<double> nis(const RunSample& s) {
-    const WallUpdateReport& update = s.snapshot.update;
-    if (update.status == StepStatus::NotAttempted || !std::isfinite(update.nis)) {
+std::optional<double> nis(const StepRecord& s) {
+    if (!std::isfinite(s.wall_nis)) {
         return std::nullopt;
     }
-    return update.nis;
+    return s.wall_nis;
 }
-std::optional<double> nees(const RunSample& s) {
+std::optional<double> nees(const StepRecord& s) {
     return s.nees;
 }
 
@@ -127,229 +122,222 @@ std::optional<double> nees(const RunSample& s) {
 
 /// The bearing innovations z − h(X̂) of this step's beacon updates, degrees, wrapped; those
 /// applied (`applied`) or those the gate or a bad S turned away.
-int bearing_innovations(const RunSample& s, std::span<double, kMaxPointsPerSample> out,
+int bearing_innovations(const StepRecord& s, std::span<double, kMaxPointsPerSample> out,
                         bool applied) {
-    const BeaconUpdates& beacons = s.snapshot.beacons;
-    const int count = std::min<int>(beacons.count, kMaxPointsPerSample);
+    const int count = std::min<int>(s.bearing_count, kMaxPointsPerSample);
     int written = 0;
     for (int i = 0; i < count; ++i) {
-        const BeaconUpdate& update = beacons.updates[static_cast<std::size_t>(i)];
-        if (!update.known || update.status == StepStatus::NotAttempted
-            || (update.status == StepStatus::Applied) != applied) {
+        const auto k = static_cast<std::size_t>(i);
+        if (s.bearing_applied[k] != applied) {
             continue;
         }
-        out[static_cast<std::size_t>(written++)] =
-            radians_to_degrees(wrap_angle(update.bearing - update.predicted));
+        out[static_cast<std::size_t>(written++)] = radians_to_degrees(s.bearing_innovation[k]);
     }
     return written;
 }
-int bearing_applied(const RunSample& s, std::span<double, kMaxPointsPerSample> out) {
+int bearing_applied(const StepRecord& s, std::span<double, kMaxPointsPerSample> out) {
     return bearing_innovations(s, out, true);
 }
-int bearing_gated(const RunSample& s, std::span<double, kMaxPointsPerSample> out) {
+int bearing_gated(const StepRecord& s, std::span<double, kMaxPointsPerSample> out) {
     return bearing_innovations(s, out, false);
 }
 
-bool has_heading_sensor(const RunSample& s) {
-    return s.snapshot.readings.has_gyro || s.snapshot.readings.has_compass;
+bool has_heading_sensor(const StepRecord& s) {
+    return s.has_gyro || s.has_compass;
 }
 /// `heading` − θ_true wrapped to (−180°, 180°] (heading_error); NaN without truth.
-double heading_error_degrees(const RunSample& s, double heading) {
-    return s.truth ? radians_to_degrees(heading_error(heading, s.truth->pose.theta)) : kNaN;
+double heading_error_degrees(const StepRecord& s, double heading) {
+    return s.has_truth ? radians_to_degrees(heading_error(heading, s.truth.theta)) : kNaN;
 }
 /// Drawn beside the gyro's and the compass's errors, so only when the run has one of them.
-std::optional<double> heading_error_estimate(const RunSample& s) {
+std::optional<double> heading_error_estimate(const StepRecord& s) {
     if (!has_heading_sensor(s)) {
         return std::nullopt;
     }
-    return heading_error_degrees(s, s.snapshot.estimate(kTheta));
+    return heading_error_degrees(s, s.estimate.theta);
 }
-std::optional<double> heading_error_gyro(const RunSample& s) {
-    if (!s.snapshot.readings.has_gyro) {
+std::optional<double> heading_error_gyro(const StepRecord& s) {
+    if (!s.has_gyro) {
         return std::nullopt;
     }
-    return heading_error_degrees(s, s.snapshot.readings.gyro_heading);
+    return heading_error_degrees(s, s.gyro_heading);
 }
-std::optional<double> heading_error_compass(const RunSample& s) {
-    if (!s.snapshot.readings.has_compass) {
+std::optional<double> heading_error_compass(const StepRecord& s) {
+    if (!s.has_compass) {
         return std::nullopt;
     }
-    return heading_error_degrees(s, s.snapshot.readings.compass_heading);
+    return heading_error_degrees(s, s.compass_heading);
 }
 
-std::optional<double> turn_rate_true(const RunSample& s) {
-    if (!s.snapshot.readings.has_gyro) {
+std::optional<double> turn_rate_true(const StepRecord& s) {
+    if (!s.has_gyro) {
         return std::nullopt;
     }
-    return s.truth ? radians_to_degrees(s.truth->velocity.w) : kNaN;
+    return s.has_truth ? radians_to_degrees(s.true_turn_rate) : kNaN;
 }
-std::optional<double> turn_rate_gyro(const RunSample& s) {
-    if (!s.snapshot.readings.has_gyro) {
+std::optional<double> turn_rate_gyro(const StepRecord& s) {
+    if (!s.has_gyro) {
         return std::nullopt;
     }
-    return radians_to_degrees(s.snapshot.readings.gyro_rate);
+    return radians_to_degrees(s.gyro_rate);
 }
-std::optional<double> turn_rate_encoders(const RunSample& s) {
-    if (!s.snapshot.readings.has_gyro || !s.snapshot.speeds.valid) {
+std::optional<double> turn_rate_encoders(const StepRecord& s) {
+    if (!s.has_gyro || !s.speeds_valid) {
         return std::nullopt;
     }
-    return radians_to_degrees(s.snapshot.speeds.body_encoders.w);
+    return radians_to_degrees(s.encoder_turn_rate);
 }
-std::optional<double> turn_rate_fused(const RunSample& s) {
-    if (s.snapshot.localisation != Localisation::GyroFusion) {
+std::optional<double> turn_rate_fused(const StepRecord& s) {
+    if (s.localisation != Localisation::GyroFusion) {
         return std::nullopt;
     }
-    return radians_to_degrees(s.snapshot.fused_velocity.w);
+    return radians_to_degrees(s.fused_turn_rate);
 }
 
 /// The wheel-speed estimates (computed in every run) belong to the lessons of paper 003: a
 /// run with its sensors (gyroscope, accelerometers) or its 5-state fusion.
-bool has_wheel_speed_estimates(const RunSample& s) {
-    const LoopSnapshot& x = s.snapshot;
-    return x.speeds.valid
-           && (x.readings.has_gyro || x.readings.has_accelerometers
-               || x.localisation == Localisation::GyroFusion);
+bool has_wheel_speed_estimates(const StepRecord& s) {
+    return s.speeds_valid
+           && (s.has_gyro || s.has_accelerometers || s.localisation == Localisation::GyroFusion);
 }
-std::optional<double> wheel_true(const RunSample& s, bool right) {
+std::optional<double> wheel_true(const StepRecord& s, bool right) {
     if (!has_wheel_speed_estimates(s)) {
         return std::nullopt;
     }
-    if (!s.truth) {
+    if (!s.has_truth) {
         return kNaN;
     }
-    return right ? s.truth->wheel_surface_speeds.right : s.truth->wheel_surface_speeds.left;
+    return right ? s.true_wheel_speeds.right : s.true_wheel_speeds.left;
 }
-std::optional<double> wheel_right_true(const RunSample& s) {
+std::optional<double> wheel_right_true(const StepRecord& s) {
     return wheel_true(s, true);
 }
-std::optional<double> wheel_left_true(const RunSample& s) {
+std::optional<double> wheel_left_true(const StepRecord& s) {
     return wheel_true(s, false);
 }
-std::optional<double> wheel_estimate(const RunSample& s, const std::array<double, 2>& speeds,
+std::optional<double> wheel_estimate(const StepRecord& s, const std::array<double, 2>& speeds,
                                      int wheel) {
     if (!has_wheel_speed_estimates(s)) {
         return std::nullopt;
     }
     return speeds[static_cast<std::size_t>(wheel)];
 }
-std::optional<double> wheel_right_kf(const RunSample& s) {
-    return wheel_estimate(s, s.snapshot.speeds.wheel_kf, 0);
+std::optional<double> wheel_right_kf(const StepRecord& s) {
+    return wheel_estimate(s, s.wheel_kf, 0);
 }
-std::optional<double> wheel_left_kf(const RunSample& s) {
-    return wheel_estimate(s, s.snapshot.speeds.wheel_kf, 1);
+std::optional<double> wheel_left_kf(const StepRecord& s) {
+    return wheel_estimate(s, s.wheel_kf, 1);
 }
-std::optional<double> wheel_right_differentiated(const RunSample& s) {
-    return wheel_estimate(s, s.snapshot.speeds.wheel_differentiated, 0);
+std::optional<double> wheel_right_differentiated(const StepRecord& s) {
+    return wheel_estimate(s, s.wheel_differentiated, 0);
 }
-std::optional<double> wheel_left_differentiated(const RunSample& s) {
-    return wheel_estimate(s, s.snapshot.speeds.wheel_differentiated, 1);
+std::optional<double> wheel_left_differentiated(const StepRecord& s) {
+    return wheel_estimate(s, s.wheel_differentiated, 1);
 }
 
-/// The estimate and covariance of filter `kind` at this sample: the primary's or the
-/// shadow's; nothing unless both ran (the comparison is the point).
+/// The position and cost of filter `kind` at this step: the primary's or the shadow's;
+/// nothing unless both ran (the comparison is the point).
 struct KindEstimate {
-    const StateVector* estimate = nullptr;
+    Vector2 position;
     double seconds = 0.0;
 };
-std::optional<KindEstimate> estimate_of(const RunSample& s, FilterKind kind) {
-    const LoopSnapshot& x = s.snapshot;
-    if (!x.shadow.active) {
+std::optional<KindEstimate> estimate_of(const StepRecord& s, FilterKind kind) {
+    if (!s.shadow_active) {
         return std::nullopt;
     }
-    if (x.filter_kind == kind) {
-        return KindEstimate{&x.estimate, x.filter_seconds};
+    if (s.filter_kind == kind) {
+        return KindEstimate{position_of(s.estimate), s.filter_seconds};
     }
-    if (x.shadow.kind == kind) {
-        return KindEstimate{&x.shadow.estimate, x.shadow_filter_seconds};
+    if (s.shadow_kind == kind) {
+        return KindEstimate{s.shadow_position, s.shadow_filter_seconds};
     }
     return std::nullopt;
 }
 /// ‖(x̂, ŷ) − (x, y)‖, m.
-std::optional<double> position_error_of(const RunSample& s, FilterKind kind) {
+std::optional<double> position_error_of(const StepRecord& s, FilterKind kind) {
     const std::optional<KindEstimate> of = estimate_of(s, kind);
     if (!of) {
         return std::nullopt;
     }
-    if (!s.truth) {
+    if (!s.has_truth) {
         return kNaN;
     }
-    return pose_error(*of->estimate, s.truth->pose).position();
+    return (of->position - position_of(s.truth)).norm();
 }
-std::optional<double> ekf_position_error(const RunSample& s) {
+std::optional<double> ekf_position_error(const StepRecord& s) {
     return position_error_of(s, FilterKind::Ekf);
 }
-std::optional<double> ukf_position_error(const RunSample& s) {
+std::optional<double> ukf_position_error(const StepRecord& s) {
     return position_error_of(s, FilterKind::Ukf);
 }
-std::optional<double> cost_of(const RunSample& s, FilterKind kind) {
+std::optional<double> cost_of(const StepRecord& s, FilterKind kind) {
     const std::optional<KindEstimate> of = estimate_of(s, kind);
     if (!of || !std::isfinite(of->seconds)) {
         return std::nullopt;
     }
     return of->seconds * 1e6;
 }
-std::optional<double> ekf_cost(const RunSample& s) {
+std::optional<double> ekf_cost(const StepRecord& s) {
     return cost_of(s, FilterKind::Ekf);
 }
-std::optional<double> ukf_cost(const RunSample& s) {
+std::optional<double> ukf_cost(const StepRecord& s) {
     return cost_of(s, FilterKind::Ukf);
 }
 // ---- the laser lesson (paper 001): one point per scan the filter matched -------------
 
 /// The scan the filter processed this step (not one skipped for its beam count), if any.
-const LaserUpdate* scan_of(const RunSample& s) {
-    const LaserUpdate& laser = s.snapshot.laser;
-    return laser.scan_received && !laser.wrong_beam_count ? &laser : nullptr;
+const LaserNumbers* scan_of(const StepRecord& s) {
+    return s.laser.processed ? &s.laser : nullptr;
 }
 /// ICP's matched points of the scans whose match was used (`used`) or was a mismatch.
-std::optional<double> laser_matched_points(const RunSample& s, bool used) {
-    const LaserUpdate* laser = scan_of(s);
+std::optional<double> laser_matched_points(const StepRecord& s, bool used) {
+    const LaserNumbers* laser = scan_of(s);
     if (laser == nullptr || laser->matched != used) {
         return std::nullopt;
     }
-    return laser->icp.matched_points;
+    return laser->matched_points;
 }
-std::optional<double> laser_matched_used(const RunSample& s) {
+std::optional<double> laser_matched_used(const StepRecord& s) {
     return laser_matched_points(s, true);
 }
-std::optional<double> laser_matched_mismatch(const RunSample& s) {
+std::optional<double> laser_matched_mismatch(const StepRecord& s) {
     return laser_matched_points(s, false);
 }
-std::optional<double> laser_consecutive_mismatches(const RunSample& s) {
-    const LaserUpdate* laser = scan_of(s);
+std::optional<double> laser_consecutive_mismatches(const StepRecord& s) {
+    const LaserNumbers* laser = scan_of(s);
     if (laser == nullptr) {
         return std::nullopt;
     }
     return laser->consecutive_mismatches;
 }
 /// Where P was inflated (§IV-B): a point at the mismatch count that triggered it.
-std::optional<double> laser_recoveries(const RunSample& s) {
-    const LaserUpdate* laser = scan_of(s);
+std::optional<double> laser_recoveries(const StepRecord& s) {
+    const LaserNumbers* laser = scan_of(s);
     if (laser == nullptr || !laser->recovery_triggered) {
         return std::nullopt;
     }
     return laser->consecutive_mismatches;
 }
 /// V = Z − Ẑ (eq. 3) of the scans the update ran on; x and y in cm, θ in degrees.
-std::optional<double> laser_innovation(const RunSample& s, int i) {
-    const LaserUpdate* laser = scan_of(s);
-    if (laser == nullptr || laser->status == StepStatus::NotAttempted) {
+std::optional<double> laser_innovation(const StepRecord& s, int i) {
+    const LaserNumbers* laser = scan_of(s);
+    if (laser == nullptr || !laser->updated) {
         return std::nullopt;
     }
     return i == kTheta ? radians_to_degrees(laser->innovation(kTheta))
                        : 100.0 * laser->innovation(i);
 }
-std::optional<double> laser_innovation_x(const RunSample& s) {
+std::optional<double> laser_innovation_x(const StepRecord& s) {
     return laser_innovation(s, kX);
 }
-std::optional<double> laser_innovation_y(const RunSample& s) {
+std::optional<double> laser_innovation_y(const StepRecord& s) {
     return laser_innovation(s, kY);
 }
-std::optional<double> laser_innovation_theta(const RunSample& s) {
+std::optional<double> laser_innovation_theta(const StepRecord& s) {
     return laser_innovation(s, kTheta);
 }
 
-std::optional<double> no_single_value(const RunSample& /*s*/) {
+std::optional<double> no_single_value(const StepRecord& /*s*/) {
     return std::nullopt;
 }
 

@@ -111,7 +111,7 @@ PlotsPanel::PlotsPanel(const RunHistory& history, QWidget* parent)
     applyPalette();
     historyRestarted();
     if (!history_.empty()) {
-        samplesAppended(0, static_cast<int>(history_.samples().size()));
+        samplesAppended(0, static_cast<int>(history_.size()));
     }
 }
 
@@ -291,13 +291,15 @@ void PlotsPanel::samplesAppended(int first, int count) {
         // The restart was missed: start over from the new history.
         historyRestarted();
         first = 0;
-        count = static_cast<int>(history_.samples().size());
+        count = static_cast<int>(history_.size());
     }
-    const std::vector<RunSample>& samples = history_.samples();
+    // The records, not the samples: a panel built on a long run (or one that missed a
+    // restart) takes every step in, and only the records are all still there.
+    const std::vector<StepRecord>& records = history_.records();
     // Everything not yet taken up to the announced end: a skipped announcement leaves no
     // hole, a repeated one adds nothing.
     const auto announced_end = static_cast<std::size_t>(std::max(0, first) + std::max(0, count));
-    const std::size_t end = std::min(announced_end, samples.size());
+    const std::size_t end = std::min(announced_end, records.size());
     if (end <= taken_) {
         return;
     }
@@ -327,14 +329,14 @@ void PlotsPanel::samplesAppended(int first, int count) {
             extent.include(value);
         };
         for (std::size_t i = begin; i < end; ++i) {
-            const RunSample& sample = samples[i];
+            const StepRecord& step = records[i];
             if (series.values != nullptr) {
-                const int points = series.values(sample, several);
+                const int points = series.values(step, several);
                 for (int p = 0; p < points; ++p) {
-                    add(sample.snapshot.time, several[static_cast<std::size_t>(p)]);
+                    add(step.time, several[static_cast<std::size_t>(p)]);
                 }
-            } else if (const std::optional<double> value = series.value(sample)) {
-                add(sample.snapshot.time, *value);
+            } else if (const std::optional<double> value = series.value(step)) {
+                add(step.time, *value);
             }
         }
         if (!keys.isEmpty()) {
@@ -344,11 +346,11 @@ void PlotsPanel::samplesAppended(int first, int count) {
     }
     showPresentPlots();
     if (begin == 0) {
-        first_time_ = samples.front().snapshot.time;
+        first_time_ = records.front().time;
     }
-    last_time_ = samples[end - 1].snapshot.time;
+    last_time_ = records[end - 1].time;
     taken_ = end;
-    showNoTruth(!samples[end - 1].truth.has_value());
+    showNoTruth(!records[end - 1].has_truth);
     moveLaserThresholds();
     updateAxes();
     requestReplots();

@@ -1,5 +1,6 @@
 #include "legofeup/ui/session/run_samples.hpp"
 
+#include <memory>
 #include <variant>
 
 #include "legofeup/core/consistency.hpp"
@@ -27,9 +28,17 @@ RunSample make_run_sample(const LoopSnapshot& snapshot, const std::optional<Grou
     return sample;
 }
 
+GroundTruth truth_or_unknown(const RunSample& sample) {
+    if (sample.truth) {
+        return *sample.truth;
+    }
+    return *lessons::UnknownTruth().truth_at(sample.snapshot.time);
+}
+
 ArenaScene scene_of(const lessons::ResolvedRun& run) {
     ArenaScene scene;
     scene.walls = run.world.walls;
+    scene.loop = std::make_shared<const LoopConfig>(run.loop);
     if (const auto* path = std::get_if<FollowPath>(&run.loop.controller)) {
         scene.path = path->segments();
     }

@@ -34,15 +34,6 @@ QStringList problem_lines(const lessons::InputError& error) {
     return lines;
 }
 
-/// A sample's truth, or for a robot without one (a real NXT) the CLI's unknown truth: the
-/// trace's truth and NEES cells stay empty.
-GroundTruth truth_or_unknown(const RunSample& sample) {
-    if (sample.truth) {
-        return *sample.truth;
-    }
-    return *lessons::UnknownTruth().truth_at(sample.snapshot.time);
-}
-
 }  // namespace
 
 QString phase_text(RunPhase phase) {
@@ -136,12 +127,7 @@ QStringList Session::loadConfig(const QString& path) {
 }
 
 QString Session::exportTrace(const QString& path) const {
-    std::ostringstream text;
-    lessons::TraceCsvWriter writer(text, resolved_.loop);
-    for (const RunSample& sample : history_.samples()) {
-        writer.on_step(sample.snapshot, truth_or_unknown(sample));
-    }
-    return write_atomically(path, QByteArray::fromStdString(text.str()));
+    return write_atomically(path, QByteArray::fromStdString(history_.trace_csv()));
 }
 
 void Session::closeRunLog() {
@@ -480,7 +466,7 @@ void Session::drain() {
                 emit problem(tr("The run log stopped: %1").arg(error.what()));
             }
         }
-        const int first = static_cast<int>(history_.samples().size());
+        const int first = static_cast<int>(history_.size());
         const int count = static_cast<int>(batch.size());
         history_.append(std::move(batch));
         emit samplesAppended(first, count);

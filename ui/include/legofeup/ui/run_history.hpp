@@ -1,16 +1,22 @@
 #pragma once
-// What the views draw: every step of the current run, kept in full on the GUI thread.
+// What the views draw: every step of the current run, on the GUI thread, in a memory that
+// grows by ~0.9 kB a step instead of a whole sample's 5.9 kB (two 1024-beam scans alone are
+// 4 kB, in every snapshot of every lesson).
 //
 // The session's worker thread produces RunSamples; the session moves them here in one batch
-// per repaint (docs/gui.md) and tells the views which ones are new. Views read this history
-// only on the GUI thread, so it needs no lock.
+// per repaint (docs/gui.md) and tells the views which ones are new. Of every step the history
+// keeps a StepRecord (the numbers the plots and the arena's paths need) and its trace.csv row
+// (for File ▸ Export trace); whole samples, scans and all, only for the last kRecentSamples
+// steps, the latest batch, and one step per kKeptPeriod of run time before them. Views read
+// this history only on the GUI thread, so it needs no lock.
 
+#include <cstddef>
 #include <cstdint>
-#include <iterator>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <optional>
-#include <utility>
+#include <string>
 #include <vector>
 
 #include "legofeup/core/beacons.hpp"
@@ -18,6 +24,7 @@
 #include "legofeup/core/ground_truth.hpp"
 #include "legofeup/core/ir_geometry.hpp"
 #include "legofeup/core/laser_scan.hpp"
+#include "legofeup/core/loop_config.hpp"
 #include "legofeup/core/loop_snapshot.hpp"
 #include "legofeup/core/occupancy_grid.hpp"
 #include "legofeup/core/walls.hpp"
@@ -62,34 +69,142 @@ struct ArenaScene {
     /// The laser filter's map when it is not the world's (an outdated map); null otherwise.
     std::shared_ptr<const OccupancyGrid> filter_map;
     LaserScene laser;
+    /// The loop the run uses (the trace rows name its walls); null: the trace is its header.
+    std::shared_ptr<const LoopConfig> loop;
 };
 
+/// The laser lesson's numbers of one step (paper 001), for the plots of the scan matching.
+struct LaserNumbers {
+    bool processed = false;  ///< a scan was matched this step (not one skipped for its beams)
+    bool matched = false;    ///< its match was used
+    bool updated = false;    ///< the H = I update ran (status other than NotAttempted)
+    bool recovery_triggered = false;
+    int matched_points = 0;  ///< ICP's
+    int consecutive_mismatches = 0;
+    Eigen::Vector3d innovation = Eigen::Vector3d::Zero();  ///< V = Z − Ẑ, m and rad
+};
+
+/// What the history keeps of every step, also once the step's sample is dropped: the numbers
+/// the plots draw (plot_series.cpp reads nothing else) and the arena's paths and covariance
+/// trail. 432 bytes; make_step_record() fills it from a sample.
+struct StepRecord {
+    double time = 0.0;  ///< the frame's time stamp, s
+    Pose2 estimate;     ///< x̂, ŷ, θ̂
+    /// P's pose block: the three variances and the x–y covariance (m², rad²).
+    double pxx = 0.0;
+    double pxy = 0.0;
+    double pyy = 0.0;
+    double ptt = 0.0;
+    Vector2 odometry = Vector2::Zero();  ///< the dead-reckoning position
+    WheelSpeeds wheels;                  ///< (V1, V2) sent to the robot
+    /// The IR distances ds1, ds2 as measured, m; NaN when out of range.
+    std::array<double, kIrSensorCount> ir_distance{};
+    /// NIS of the wall update, if one ran and computed it (NaN otherwise).
+    double wall_nis = std::numeric_limits<double>::quiet_NaN();
+    double nees = std::numeric_limits<double>::quiet_NaN();  ///< RunSample::nees
+
+    /// The truth at the step's time (has_truth false over a link without one).
+    bool has_truth = false;
+    std::uint32_t teleports = 0;  ///< GroundTruth::teleports
+    Pose2 truth;
+    WheelSpeeds true_wheel_speeds;
+    double true_turn_rate = 0.0;  ///< rad/s
+
+    Localisation localisation = Localisation::Walls;
+    FilterKind filter_kind = FilterKind::Ekf;
+    /// Beacon updates with a known beacon that computed an innovation (paper 002): the bearing
+    /// innovations z − h(X̂) in rad, wrapped, and whether each was applied.
+    std::uint8_t bearing_count = 0;
+    std::array<double, kMaxBeaconSightings> bearing_innovation{};
+    std::array<bool, kMaxBeaconSightings> bearing_applied{};
+    // Paper 003's sensors and estimates.
+    bool has_gyro = false;
+    bool has_compass = false;
+    bool has_accelerometers = false;
+    bool speeds_valid = false;
+    double gyro_rate = 0.0;     ///< rad/s
+    double gyro_heading = 0.0;  ///< rad
+    double compass_heading = 0.0;
+    std::array<double, 2> wheel_kf{};              ///< [right, left], m/s
+    std::array<double, 2> wheel_differentiated{};  ///< [right, left], m/s
+    double encoder_turn_rate = 0.0;                ///< ω from differentiated encoders, rad/s
+    double fused_turn_rate = 0.0;                  ///< the 5-state EKF's ω, rad/s
+    // The comparison filter run on the same frames (paper 002).
+    bool shadow_active = false;
+    FilterKind shadow_kind = FilterKind::Ukf;
+    Vector2 shadow_position = Vector2::Zero();
+    double filter_seconds = 0.0;
+    double shadow_filter_seconds = 0.0;
+    LaserNumbers laser;
+};
+
+/// The record of one sample (every number a StepRecord holds, from its snapshot and truth).
+StepRecord make_step_record(const RunSample& sample);
+
+/// The history of the current run (see the top of this file).
 class RunHistory {
   public:
-    /// Starts a new run: drops every sample and bumps epoch().
-    void restart(ArenaScene scene) {
-        scene_ = std::move(scene);
-        samples_.clear();
-        ++epoch_;
-    }
-    /// Takes the scene of a run reconfigured while it goes (its thresholds may change);
-    /// keeps the samples and the epoch.
-    void update_scene(ArenaScene scene) { scene_ = std::move(scene); }
-    void append(std::vector<RunSample>&& batch) {
-        samples_.insert(samples_.end(), std::make_move_iterator(batch.begin()),
-                        std::make_move_iterator(batch.end()));
-    }
+    /// Whole samples kept at the end of the history: 30 s at 20 Hz (and never fewer than
+    /// the latest batch, so that whoever is told of it can read it whole).
+    static constexpr std::size_t kRecentSamples = 600;
+    /// Before those, one whole sample per this much run time (s) is kept.
+    static constexpr double kKeptPeriod = 1.0;
 
-    const std::vector<RunSample>& samples() const { return samples_; }
-    bool empty() const { return samples_.empty(); }
-    const RunSample& latest() const { return samples_.back(); }
+    RunHistory();
+    ~RunHistory();
+    RunHistory(RunHistory&&) noexcept;
+    RunHistory& operator=(RunHistory&&) noexcept;
+    RunHistory(const RunHistory&) = delete;
+    RunHistory& operator=(const RunHistory&) = delete;
+
+    /// Starts a new run: drops every step and bumps epoch().
+    void restart(ArenaScene scene);
+    /// Takes the scene of a run reconfigured while it goes (its thresholds may change);
+    /// keeps the steps and the epoch.
+    void update_scene(ArenaScene scene);
+    void append(std::vector<RunSample>&& batch);
+
+    /// Steps of the run so far.
+    std::size_t size() const { return records_.size(); }
+    bool empty() const { return records_.empty(); }
+    /// Every step's record, in order.
+    const std::vector<StepRecord>& records() const { return records_; }
+    const StepRecord& record(std::size_t step) const { return records_[step]; }
+    /// Step `step`'s whole sample if it is still kept (always for the last kRecentSamples
+    /// and the latest batch), else nullptr.
+    const RunSample* sample(std::size_t step) const;
+    /// The whole sample kept nearest to step `step` (< size()), and its step: what a view
+    /// showing a past step's scan shows. Nearest in steps; the later one on a tie.
+    std::pair<std::size_t, const RunSample*> nearest_sample(std::size_t step) const;
+    /// How many whole samples are kept.
+    std::size_t samples_kept() const { return recent_.size() + older_.size(); }
+    /// The step of the oldest sample in the kept recent run (sample(i) is whole from there).
+    std::size_t recent_begin() const { return records_.size() - recent_.size(); }
+    const RunSample& latest() const { return recent_.back(); }
     const ArenaScene& scene() const { return scene_; }
     /// Changes whenever the history starts over, so views know to drop what they cached.
     std::uint64_t epoch() const { return epoch_; }
+    /// Every step in the CLI's trace.csv format, with its header (written as the steps come).
+    std::string trace_csv() const;
 
   private:
+    struct KeptSample {
+        std::size_t step = 0;
+        RunSample sample;
+    };
+    class TraceRows;
+    /// Moves the samples beyond the recent ones (at least `batch_size`) out of recent_,
+    /// keeping the first of each kKeptPeriod in older_.
+    void drop_old_samples(std::size_t batch_size);
+
     ArenaScene scene_;
-    std::vector<RunSample> samples_;
+    std::vector<StepRecord> records_;
+    std::deque<RunSample> recent_;   ///< steps recent_begin() … size() − 1
+    std::vector<KeptSample> older_;  ///< one per kKeptPeriod before them, in order
+    /// A sample leaving recent_ is kept in older_ if its time is at least this (the first
+    /// always is): the first sample of each kKeptPeriod.
+    double next_kept_time_ = -std::numeric_limits<double>::infinity();
+    std::unique_ptr<TraceRows> trace_;
     std::uint64_t epoch_ = 0;
 };
 

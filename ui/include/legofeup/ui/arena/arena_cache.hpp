@@ -35,7 +35,7 @@ class WorldBounds {
 
 /// A past covariance ellipse of the trail, ready to draw.
 struct TrailEllipse {
-    std::size_t sample = 0;  ///< index into the history's samples
+    std::size_t sample = 0;  ///< index into the history's steps
     QPolygonF polygon;       ///< world coordinates
 };
 
@@ -70,7 +70,7 @@ class ArenaCache {
     }
 
   private:
-    void take_sample(const RunSample& sample, std::size_t index, EllipseConfidence level);
+    void take_sample(const StepRecord& record, std::size_t index, EllipseConfidence level);
     void build_scene(const RunHistory& history);
 
     std::uint64_t epoch_ = 0;
@@ -94,6 +94,7 @@ QPainterPath intended_painter_path(const std::vector<PathSegment>& path, const V
 
 /// The ellipse of a sample's position covariance (P's x–y block) at its estimate.
 CovarianceEllipse sample_ellipse(const RunSample& sample, EllipseConfidence level);
+CovarianceEllipse sample_ellipse(const StepRecord& record, EllipseConfidence level);
 
 /// An ellipse as a closed polygon of `count` points in world coordinates.
 QPolygonF ellipse_qpolygon(const CovarianceEllipse& ellipse, int count);

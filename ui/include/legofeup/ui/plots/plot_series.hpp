@@ -1,6 +1,7 @@
 #pragma once
 // What the plots panel draws: the plots, the series of each plot and how each series' value
-// is read from a RunSample. Plain data without Qt: one table, so a new series is one new row.
+// is read from a step's record (run_history.hpp: a new series reads one of its numbers, or a
+// new one added there). Plain data without Qt: one table, so a new series is one new row.
 
 #include <cstdint>
 #include <optional>
@@ -110,12 +111,12 @@ struct PlotDefinition {
     bool optional = false;
 };
 
-/// The value of a series at one sample: nullopt adds no point (NIS without an update), NaN
+/// The value of a series at one step: nullopt adds no point (NIS without an update), NaN
 /// adds a gap in the line (an IR reading out of range, an error without truth).
-using SeriesValue = std::optional<double> (*)(const RunSample&);
-/// Several values of a series at one sample (one per beacon sighting): writes them to `out`
+using SeriesValue = std::optional<double> (*)(const StepRecord&);
+/// Several values of a series at one step (one per beacon sighting): writes them to `out`
 /// and returns how many.
-using SeriesValues = int (*)(const RunSample&, std::span<double, kMaxPointsPerSample> out);
+using SeriesValues = int (*)(const StepRecord&, std::span<double, kMaxPointsPerSample> out);
 
 struct SeriesDefinition {
     Series series;

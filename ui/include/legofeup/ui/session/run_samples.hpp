@@ -12,6 +12,10 @@ namespace legofeup::ui {
 /// The sample of one step, with its NEES computed when the truth is known.
 RunSample make_run_sample(const LoopSnapshot& snapshot, const std::optional<GroundTruth>& truth);
 
+/// A sample's truth, or for a robot without one (a real NXT) the CLI's unknown truth: the
+/// trace's truth and NEES cells stay empty.
+GroundTruth truth_or_unknown(const RunSample& sample);
+
 /// The walls, map, intended path, IR mounting and laser scanner of a run, for the views.
 ArenaScene scene_of(const lessons::ResolvedRun& run);
 

@@ -1,0 +1,229 @@
+#include "legofeup/ui/run_history.hpp"
+
+#include <QByteArray>
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <sstream>
+#include <utility>
+
+#include "legofeup/core/angles.hpp"
+#include "legofeup/lessons/trace_csv.hpp"
+#include "legofeup/ui/session/run_samples.hpp"
+
+namespace legofeup::ui {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+void record_beacons(const BeaconUpdates& beacons, StepRecord& record) {
+    const int count = std::min<int>(beacons.count, kMaxBeaconSightings);
+    for (int i = 0; i < count; ++i) {
+        const BeaconUpdate& update = beacons.updates[static_cast<std::size_t>(i)];
+        if (!update.known || update.status == StepStatus::NotAttempted) {
+            continue;
+        }
+        const auto k = static_cast<std::size_t>(record.bearing_count++);
+        record.bearing_innovation[k] = wrap_angle(update.bearing - update.predicted);
+        record.bearing_applied[k] = update.status == StepStatus::Applied;
+    }
+}
+
+LaserNumbers laser_numbers(const LaserUpdate& laser) {
+    LaserNumbers numbers;
+    numbers.processed = laser.scan_received && !laser.wrong_beam_count;
+    numbers.matched = laser.matched;
+    numbers.updated = laser.status != StepStatus::NotAttempted;
+    numbers.recovery_triggered = laser.recovery_triggered;
+    numbers.matched_points = laser.icp.matched_points;
+    numbers.consecutive_mismatches = laser.consecutive_mismatches;
+    numbers.innovation = laser.innovation;
+    return numbers;
+}
+
+}  // namespace
+
+StepRecord make_step_record(const RunSample& sample) {
+    const LoopSnapshot& x = sample.snapshot;
+    StepRecord record;
+    record.time = x.time;
+    record.estimate = to_pose(x.estimate);
+    record.pxx = x.covariance(kX, kX);
+    record.pxy = x.covariance(kX, kY);
+    record.pyy = x.covariance(kY, kY);
+    record.ptt = x.covariance(kTheta, kTheta);
+    record.odometry = Vector2(x.odometry_pose.x, x.odometry_pose.y);
+    record.wheels = x.wheels;
+    for (std::size_t i = 0; i < record.ir_distance.size(); ++i) {
+        const IrDistance& reading = x.ir[i].reading;
+        record.ir_distance[i] = reading.in_range() ? reading.distance : kNaN;
+    }
+    if (x.update.status != StepStatus::NotAttempted && std::isfinite(x.update.nis)) {
+        record.wall_nis = x.update.nis;
+    }
+    record.nees = sample.nees;
+    if (sample.truth) {
+        record.has_truth = true;
+        record.teleports = sample.truth->teleports;
+        record.truth = sample.truth->pose;
+        record.true_wheel_speeds = sample.truth->wheel_surface_speeds;
+        record.true_turn_rate = sample.truth->velocity.w;
+    }
+    record.localisation = x.localisation;
+    record.filter_kind = x.filter_kind;
+    record_beacons(x.beacons, record);
+    record.has_gyro = x.readings.has_gyro;
+    record.has_compass = x.readings.has_compass;
+    record.has_accelerometers = x.readings.has_accelerometers;
+    record.gyro_rate = x.readings.gyro_rate;
+    record.gyro_heading = x.readings.gyro_heading;
+    record.compass_heading = x.readings.compass_heading;
+    record.speeds_valid = x.speeds.valid;
+    record.wheel_kf = x.speeds.wheel_kf;
+    record.wheel_differentiated = x.speeds.wheel_differentiated;
+    record.encoder_turn_rate = x.speeds.body_encoders.w;
+    record.fused_turn_rate = x.fused_velocity.w;
+    record.shadow_active = x.shadow.active;
+    record.shadow_kind = x.shadow.kind;
+    record.shadow_position = Vector2(x.shadow.estimate(kX), x.shadow.estimate(kY));
+    record.filter_seconds = x.filter_seconds;
+    record.shadow_filter_seconds = x.shadow_filter_seconds;
+    record.laser = laser_numbers(x.laser);
+    return record;
+}
+
+/// The trace.csv rows of the run, written by the CLI's writer as the steps come. A row is
+/// roughly 500 bytes of text (estimated from its columns); every kBlockBytes of rows are
+/// deflated (zlib's fastest level, once every ~25 s of a 20 Hz run; the ratio is not measured
+/// yet). Without the run's loop (a scene made by hand) only the header: the rows name its
+/// walls.
+class RunHistory::TraceRows {
+  public:
+    explicit TraceRows(std::shared_ptr<const LoopConfig> loop)
+        : rows_(loop != nullptr),
+          loop_(loop ? std::move(loop) : std::make_shared<const LoopConfig>()),
+          writer_(text_, *loop_) {
+        open_.reserve(kBlockBytes);
+        flush();
+    }
+    void add(const RunSample& sample) {
+        if (rows_) {
+            writer_.on_step(sample.snapshot, truth_or_unknown(sample));
+        }
+    }
+    /// Moves the rows written since the last flush into the open block, and packs it once
+    /// it is full.
+    void flush() {
+        open_ += std::move(text_).str();
+        text_.str({});
+        if (open_.size() >= kBlockBytes) {
+            packed_.push_back(qCompress(reinterpret_cast<const uchar*>(open_.data()),
+                                        static_cast<qsizetype>(open_.size()), kLevel));
+            open_.clear();
+        }
+    }
+    std::string text() const {
+        std::string all;
+        for (const QByteArray& block : packed_) {
+            const QByteArray rows = qUncompress(block);
+            all.append(rows.constData(), static_cast<std::size_t>(rows.size()));
+        }
+        all += open_;
+        return all;
+    }
+
+  private:
+    static constexpr std::size_t kBlockBytes = std::size_t{256} << 10;
+    static constexpr int kLevel = 1;
+    bool rows_;                               ///< the run's loop is known: rows are written
+    std::shared_ptr<const LoopConfig> loop_;  ///< the writer refers to it
+    std::ostringstream text_;
+    lessons::TraceCsvWriter writer_;
+    std::string open_;                ///< the rows not yet packed
+    std::vector<QByteArray> packed_;  ///< deflated blocks of rows, in order
+};
+
+RunHistory::RunHistory() : trace_(std::make_unique<TraceRows>(nullptr)) {}
+RunHistory::~RunHistory() = default;
+RunHistory::RunHistory(RunHistory&&) noexcept = default;
+RunHistory& RunHistory::operator=(RunHistory&&) noexcept = default;
+
+void RunHistory::restart(ArenaScene scene) {
+    scene_ = std::move(scene);
+    records_.clear();
+    recent_.clear();
+    older_.clear();
+    next_kept_time_ = -std::numeric_limits<double>::infinity();
+    trace_ = std::make_unique<TraceRows>(scene_.loop);
+    ++epoch_;
+}
+
+void RunHistory::update_scene(ArenaScene scene) {
+    scene_ = std::move(scene);
+}
+
+void RunHistory::append(std::vector<RunSample>&& batch) {
+    for (RunSample& sample : batch) {
+        records_.push_back(make_step_record(sample));
+        trace_->add(sample);
+        recent_.push_back(std::move(sample));
+    }
+    trace_->flush();
+    drop_old_samples(batch.size());
+}
+
+void RunHistory::drop_old_samples(std::size_t batch_size) {
+    const std::size_t keep = std::max(kRecentSamples, batch_size);
+    while (recent_.size() > keep) {
+        const std::size_t step = recent_begin();
+        RunSample& oldest = recent_.front();
+        if (oldest.snapshot.time >= next_kept_time_) {
+            next_kept_time_ = oldest.snapshot.time + kKeptPeriod;
+            older_.push_back({step, std::move(oldest)});
+        }
+        recent_.pop_front();
+    }
+}
+
+const RunSample* RunHistory::sample(std::size_t step) const {
+    if (step >= records_.size()) {
+        return nullptr;
+    }
+    if (step >= recent_begin()) {
+        return &recent_[step - recent_begin()];
+    }
+    const auto found = std::lower_bound(
+        older_.begin(), older_.end(), step,
+        [](const KeptSample& kept, std::size_t wanted) { return kept.step < wanted; });
+    return found != older_.end() && found->step == step ? &found->sample : nullptr;
+}
+
+std::pair<std::size_t, const RunSample*> RunHistory::nearest_sample(std::size_t step) const {
+    if (records_.empty()) {
+        return {0, nullptr};
+    }
+    step = std::min(step, records_.size() - 1);
+    if (step >= recent_begin()) {
+        return {step, &recent_[step - recent_begin()]};
+    }
+    // The first kept sample at or after `step`: an older one, or the first recent one.
+    const auto later = std::lower_bound(
+        older_.begin(), older_.end(), step,
+        [](const KeptSample& kept, std::size_t wanted) { return kept.step < wanted; });
+    std::pair<std::size_t, const RunSample*> after{recent_begin(), &recent_.front()};
+    if (later != older_.end()) {
+        after = {later->step, &later->sample};
+    }
+    if (later == older_.begin()) {
+        return after;
+    }
+    const KeptSample& before = *std::prev(later);
+    return step - before.step < after.first - step ? std::pair{before.step, &before.sample} : after;
+}
+
+std::string RunHistory::trace_csv() const {
+    return trace_->text();
+}
+
+}  // namespace legofeup::ui
