@@ -19,6 +19,7 @@ namespace legofeup::ui {
 namespace {
 
 using testing::one_lap;
+using testing::one_lap_samples;
 using testing::render;
 
 const QString kRecordedRow = QStringLiteral("the recording layer's row");
