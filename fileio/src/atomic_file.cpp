@@ -51,7 +51,7 @@ WriteError::WriteError(fs::path path, std::string step, std::error_code reason)
 
 class AtomicFile::Output {
   public:
-    explicit Output(int fd) : fd(fd), buffer(fd), stream(&buffer) {}
+    explicit Output(int descriptor) : fd(descriptor), buffer(descriptor), stream(&buffer) {}
 
     int fd;
     FdOutputBuffer buffer;

@@ -26,7 +26,7 @@ FdOutputBuffer::int_type FdOutputBuffer::overflow(int_type ch) {
 }
 
 std::streamsize FdOutputBuffer::xsputn(const char* data, std::streamsize count) {
-    const auto room = static_cast<std::streamsize>(epptr() - pptr());
+    const std::streamsize room = epptr() - pptr();
     if (count <= room) {
         traits_type::copy(pptr(), data, static_cast<std::size_t>(count));
         pbump(static_cast<int>(count));
