@@ -107,11 +107,11 @@ std::optional<SeedAverages> seed_averages(const nlohmann::json& per_seed) {
 /// robot's own systematic errors repeat lap after lap): N is divided by the averages'
 /// dispersion φ when φ > 1 (nees_dispersion), which widens the interval by about √φ without
 /// excusing a filter whose NEES is off by a factor. Null without truth.
-nlohmann::json pooled_time_average_bounds(const SeedAverages& seeds, double confidence) {
+nlohmann::json pooled_time_average_bounds(const SeedAverages& seeds, double dispersion,
+                                          double confidence) {
     const std::vector<double> equal_weights(seeds.effective.size(), 1.0);
-    const double pooled =
-        dispersion_corrected_samples(pooled_effective_samples(equal_weights, seeds.effective),
-                                     nees_dispersion(seeds.averages, seeds.effective, kStateSize));
+    const double pooled = dispersion_corrected_samples(
+        pooled_effective_samples(equal_weights, seeds.effective), dispersion);
     if (!(pooled > 0.0)) {
         return nullptr;
     }
@@ -195,14 +195,15 @@ nlohmann::json grade_submission(const Lesson& lesson, const Submission& submissi
             }
         }
         const std::optional<SeedAverages> averages = seed_averages(per_seed);
+        const double dispersion =
+            averages ? nees_dispersion(averages->averages, averages->effective, kStateSize) : kNan;
         for (const TimeAverageBounds& bounds : kTimeAverageNeesBounds) {
             means[bounds.name] =
-                averages ? pooled_time_average_bounds(*averages, bounds.confidence) : nullptr;
+                averages ? pooled_time_average_bounds(*averages, dispersion, bounds.confidence)
+                         : nullptr;
             aggregate[bounds.name] = means[bounds.name];
         }
         // φ, reported beside the bounds it widened (null without truth or with one seed).
-        const double dispersion =
-            averages ? nees_dispersion(averages->averages, averages->effective, kStateSize) : kNan;
         aggregate[kNeesDispersion] =
             std::isfinite(dispersion) ? nlohmann::json(dispersion) : nlohmann::json(nullptr);
     }

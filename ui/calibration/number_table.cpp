@@ -47,15 +47,17 @@ int NumberTable::addRow(const std::vector<double>& values) {
     return row;
 }
 
+QComboBox* NumberTable::choiceBox(int row) const {
+    return choice_ ? qobject_cast<QComboBox*>(cellWidget(row, numberColumns())) : nullptr;
+}
+
 int NumberTable::choice(int row) const {
-    const auto* box =
-        choice_ ? qobject_cast<QComboBox*>(cellWidget(row, numberColumns())) : nullptr;
+    const QComboBox* box = choiceBox(row);
     return box != nullptr ? box->currentIndex() : 0;
 }
 
 void NumberTable::setChoice(int row, int index) {
-    if (auto* box =
-            choice_ ? qobject_cast<QComboBox*>(cellWidget(row, numberColumns())) : nullptr) {
+    if (QComboBox* box = choiceBox(row)) {
         box->setCurrentIndex(index);
     }
 }

@@ -9,6 +9,8 @@
 #include <optional>
 #include <vector>
 
+class QComboBox;
+
 namespace legofeup::ui {
 
 /// A column of fixed choices after the number columns; choices[0] is each new row's.
@@ -49,6 +51,8 @@ class NumberTable : public QTableWidget {
 
   private:
     int numberColumns() const { return static_cast<int>(headers_.size()); }
+    /// The drop-down of `row`'s choice, or nullptr without a choice column.
+    QComboBox* choiceBox(int row) const;
 
     QStringList headers_;
     std::optional<ChoiceColumn> choice_;
