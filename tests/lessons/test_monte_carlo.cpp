@@ -327,6 +327,46 @@ TEST(ShardFiles, RejectsWhatIsNotAShardWithTheFileAndTheReason) {
     EXPECT_NE(reason(R"({"format": "legofeup-shard", "format_version": 2})")
                   .find("x.json: damaged shard file"),
               std::string::npos);
+    EXPECT_NE(reason(R"({"format": 5})").find("x.json: format: not a shard file"),
+              std::string::npos);
+    EXPECT_NE(reason(R"({"format": "legofeup-shard", "format_version": 1e300})")
+                  .find("x.json: format_version = 1e+300"),
+              std::string::npos);
+}
+
+// A well-formed shard with one whole number replaced: a number a cast could not hold (found
+// by fuzz_shard_file as undefined behaviour) or a negative count is a damaged shard naming
+// the field, never a wrapped or undefined value.
+TEST(ShardFiles, RejectsWholeNumbersOutOfTheirRange) {
+    const MonteCarloSpec spec = short_spec(2);
+    const BatchHeader header = monte_carlo_header(spec, "f", "test");
+    const nlohmann::json good = monte_carlo_shard(header, {1, 2}, run_monte_carlo(spec, 1, {1, 2}));
+    ASSERT_EQ(parse_shard_file(good.dump(), "x.json").shard.count, 2);
+    const auto reason = [&](const nlohmann::json::json_pointer& field,
+                            const nlohmann::json& value) {
+        nlohmann::json bad = good;
+        bad[field] = value;
+        try {
+            parse_shard_file(bad.dump(), "x.json");
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("accepted");
+    };
+    using Pointer = nlohmann::json::json_pointer;
+    EXPECT_NE(reason(Pointer("/shard/count"), 1e300).find("count is 1e+300, not a whole number"),
+              std::string::npos);
+    EXPECT_NE(
+        reason(Pointer("/shard/index"), 4294967297LL).find("index is 4294967297, out of range"),
+        std::string::npos);
+    EXPECT_NE(reason(Pointer("/header/runs"), -2).find("runs is -2, out of range"),
+              std::string::npos);
+    EXPECT_NE(reason(Pointer("/run_records/0/seed"), 2.5).find("seed is 2.5, not a whole number"),
+              std::string::npos);
+    EXPECT_NE(reason(Pointer("/steps/runs/0"), -1).find("steps.runs[0] is -1, out of range"),
+              std::string::npos);
+    EXPECT_NE(reason(Pointer("/steps/runs/0"), -1).find("x.json: damaged shard file"),
+              std::string::npos);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "json_integer.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 
 namespace legofeup::lessons::analysis {
@@ -128,8 +129,8 @@ BatchHeader batch_header_from_json(const nlohmann::json& json) {
     header.kind = json.at("kind").get<std::string>();
     header.experiment = json.at("experiment").get<std::string>();
     header.title = json.at("title").get<std::string>();
-    header.runs = json.at("runs").get<std::size_t>();
-    header.first_seed = json.at("first_seed").get<std::uint64_t>();
+    header.runs = json_integer_at<std::size_t>(json, "runs");
+    header.first_seed = json_integer_at<std::uint64_t>(json, "first_seed");
     header.control_period = json.at("control_period_s").get<double>();
     if (header.kind == "sweep") {
         header.q_scales = json.at("q_scales").get<std::vector<double>>();
@@ -290,11 +291,11 @@ nlohmann::json to_json(const RunRecord& run) {
 
 RunRecord run_record_from_json(const nlohmann::json& json) {
     RunRecord run;
-    run.index = json.at("run").get<std::size_t>();
-    run.seed = json.at("seed").get<std::uint64_t>();
+    run.index = json_integer_at<std::size_t>(json, "run");
+    run.seed = json_integer_at<std::uint64_t>(json, "seed");
     run.routine_finished = json.at("routine_finished").get<bool>();
-    run.steps = json.at("steps").get<std::uint64_t>();
-    run.updates_applied = json.at("updates_applied").get<std::uint64_t>();
+    run.steps = json_integer_at<std::uint64_t>(json, "steps");
+    run.updates_applied = json_integer_at<std::uint64_t>(json, "updates_applied");
     read_fields(json, run, kRunFields);
     return run;
 }
@@ -308,10 +309,10 @@ nlohmann::json to_json(const SweepCell& c) {
 
 SweepCell sweep_cell_from_json(const nlohmann::json& json) {
     SweepCell c;
-    c.index = json.at("cell").get<std::size_t>();
-    c.q_index = json.at("q_index").get<std::size_t>();
-    c.r_index = json.at("r_index").get<std::size_t>();
-    c.runs = json.at("runs").get<std::size_t>();
+    c.index = json_integer_at<std::size_t>(json, "cell");
+    c.q_index = json_integer_at<std::size_t>(json, "q_index");
+    c.r_index = json_integer_at<std::size_t>(json, "r_index");
+    c.runs = json_integer_at<std::size_t>(json, "runs");
     read_fields(json, c, kCellFields);
     return c;
 }

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "../text_file.hpp"
+#include "json_integer.hpp"
 #include "legofeup/lessons/input_error.hpp"
 
 namespace legofeup::lessons::analysis {
@@ -84,7 +85,8 @@ std::vector<StepSums> steps_from_json(const nlohmann::json& json) {
     for (const CountColumn& column : kCountColumns) {
         const nlohmann::json& values = step_column(json, column.name, count);
         for (std::size_t k = 0; k < count; ++k) {
-            steps[k].*column.member = values[k].get<std::uint64_t>();
+            steps[k].*column.member = json_integer<std::uint64_t>(
+                values[k], std::string("steps.") + column.name + "[" + std::to_string(k) + "]");
         }
     }
     for (const SumColumn& column : kSumColumns) {
@@ -137,14 +139,16 @@ ShardFile parse_shard_file(const std::string& text, const std::string& source) {
     } catch (const nlohmann::json::exception& error) {
         throw fail("", "", std::string("not a shard file (not JSON): ") + error.what());
     }
-    if (!json.is_object() || json.value("format", "") != kFormat) {
+    if (!json.is_object() || !json.contains("format") || json["format"] != kFormat) {
         throw fail("format", "",
                    std::string("not a shard file (written by legofeup-cli "
                                "montecarlo or sweep with --shard)"));
     }
-    const int version = json.value("format_version", 0);
+    // Compared as JSON, not read as an int: a version of 1e300 is a wrong version, not a
+    // cast out of range.
+    const nlohmann::json version = json.value("format_version", nlohmann::json(0));
     if (version != kShardFormatVersion) {
-        throw fail("format_version", std::to_string(version),
+        throw fail("format_version", version.dump(),
                    "this legofeup-cli reads shard format " + std::to_string(kShardFormatVersion)
                        + "; write the shards again with it");
     }
@@ -152,8 +156,8 @@ ShardFile parse_shard_file(const std::string& text, const std::string& source) {
     file.source = source;
     try {
         file.header = batch_header_from_json(json.at("header"));
-        file.shard = {json.at("shard").at("index").get<int>(),
-                      json.at("shard").at("count").get<int>()};
+        file.shard = {json_integer_at<int>(json.at("shard"), "index"),
+                      json_integer_at<int>(json.at("shard"), "count")};
         if (file.header.kind == "montecarlo") {
             for (const nlohmann::json& run : json.at("run_records")) {
                 file.sums.runs.push_back(run_record_from_json(run));
