@@ -206,6 +206,33 @@ TEST(RunLog, ReplayWithTheRecordedConfigurationReproducesEveryEstimateExactly) {
     EXPECT_EQ(result.new_metrics.truth->mean_nees, live_truth.mean_nees);
 }
 
+// The GUI's progress bar and cancel: told after every step of both replays, in order, up to
+// twice the records; a false answer stops it there, with nothing more replayed.
+TEST(RunLog, RefilterReportsItsProgressAndStopsWhenTold) {
+    const RecordedRun& recorded = short_recording();
+    const RunLog log = load_run_log(recorded.path);
+    const std::size_t total = 2 * log.records.size();
+    std::size_t calls = 0;
+    const RefilterResult result = refilter(log, log.config, [&](std::size_t done, std::size_t of) {
+        EXPECT_EQ(done, calls + 1);
+        EXPECT_EQ(of, total);
+        ++calls;
+        return true;
+    });
+    EXPECT_EQ(calls, total);
+    EXPECT_TRUE(result.reproduces_recording());  // watched, the same replay
+
+    const std::size_t stop_at = log.records.size() + 7;  // in the second replay
+    calls = 0;
+    EXPECT_THROW(refilter(log, log.config,
+                          [&](std::size_t done, std::size_t) {
+                              ++calls;
+                              return done < stop_at;
+                          }),
+                 RefilterCancelled);
+    EXPECT_EQ(calls, stop_at);
+}
+
 TEST(RunLog, RefilterWithOtherNoiseChangesTheEstimatesOnTheIdenticalFrames) {
     const RecordedRun& recorded = short_recording();
     const RunLog log = load_run_log(recorded.path);

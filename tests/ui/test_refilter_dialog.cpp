@@ -59,6 +59,11 @@ double largest_gap(const QCPCurve& a, const QCPCurve& b) {
     return gap;
 }
 
+/// Waits for the dialog's replay (on its RefilterJob's thread) to be shown.
+bool refiltered(RefilterDialog& dialog) {
+    return QTest::qWaitFor([&] { return !dialog.busy(); }, kPatienceMs);
+}
+
 }  // namespace
 
 class RefilterDialogTest : public QObject {
@@ -105,6 +110,7 @@ class RefilterDialogTest : public QObject {
 
         // Unchanged settings: the two replays are the same run, and the recorded one.
         QCOMPARE(dialog.refilterNow(), QString());
+        QVERIFY(refiltered(dialog));
         RefilterPlots& plots = dialog.plots();
         const auto steps = static_cast<int>(log.records.size());
         QCOMPARE(plots.oldPath().data()->size(), steps);
@@ -124,6 +130,7 @@ class RefilterDialogTest : public QObject {
         enter(dialog, "filter.q22", QStringLiteral("1e-1"));
         QCOMPARE(dialog.newConfig().filter.q11, 1e-1);
         QCOMPARE(dialog.refilterNow(), QString());
+        QVERIFY(refiltered(dialog));
         const double gap = largest_gap(plots.oldPath(), plots.newPath());
         QVERIFY2(gap > 0.005, qPrintable(QString::number(gap)));
         QCOMPARE(plots.oldError().data()->size(), steps);
@@ -155,6 +162,8 @@ class RefilterDialogTest : public QObject {
         enter(dialog, "filter.q11", QStringLiteral("1e-12"));
         enter(dialog, "filter.q22", QStringLiteral("1e-12"));
         QCOMPARE(dialog.newConfig().filter.q22, 1e-12);  // re-filtered on Enter
+        QVERIFY(dialog.busy());  // on the job's thread: the dialog answers meanwhile
+        QVERIFY(refiltered(dialog));
         QVERIFY(dialog.result()->new_metrics.truth.value().rms_position_error
                 > 2.0 * dialog.result()->old_metrics.truth.value().rms_position_error);
         testing::save_screenshot(dialog, "refilter");
@@ -185,6 +194,7 @@ class RefilterDialogTest : public QObject {
         QCOMPARE(dialog.findChild<QLineEdit*>(QStringLiteral("refilterLogPath"))->text(),
                  log_path_);
         QCOMPARE(dialog.refilterNow(), QString());  // the good log is still there
+        QVERIFY(refiltered(dialog));
         QVERIFY(dialog.result().has_value());
     }
 
@@ -210,6 +220,7 @@ class RefilterDialogTest : public QObject {
         RefilterDialog dialog(*session_);
         QCOMPARE(dialog.openLog(path), QString());
         QCOMPARE(dialog.refilterNow(), QString());
+        QVERIFY(refiltered(dialog));
         const QTableWidget& table = dialog.metricsTable();
         for (int row = 0; row < 6; ++row) {  // the errors and the NEES need the truth
             QCOMPARE(table.item(row, 0)->text(), QStringLiteral("— (no ground truth)"));
@@ -251,6 +262,7 @@ class RefilterDialogTest : public QObject {
         RefilterDialog* dialog = window.openRefilter();
         QCOMPARE(dialog->openLog(session.recordingFile()), QString());
         QCOMPARE(dialog->refilterNow(), QString());
+        QVERIFY(refiltered(*dialog));
         QVERIFY(dialog->result()->reproduces_recording());
 
         // The next run gets a file of its own.

@@ -14,7 +14,7 @@ namespace legofeup::ui {
 namespace {
 
 /// `a` blended towards `b` by `t` in [0, 1].
-QColor mix(const QColor& a, const QColor& b, double t) {
+QColor blend_towards(const QColor& a, const QColor& b, double t) {
     // QColor's components are floats; the blend is worked in double and rounded back once.
     const auto blend = [t](float x, float y) {
         const double from = static_cast<double>(x);
@@ -73,8 +73,8 @@ PlotLook plot_look(const QPalette& palette, const QFont& base, double text_scale
     PlotLook look;
     look.background = palette.color(QPalette::Base);
     look.text = palette.color(QPalette::WindowText);
-    look.grid = mix(look.background, look.text, 0.30);
-    look.sub_grid = mix(look.background, look.text, 0.14);
+    look.grid = blend_towards(look.background, look.text, 0.30);
+    look.sub_grid = blend_towards(look.background, look.text, 0.14);
     look.legend_background = with_alpha(look.background, 215);
     const bool dark = look.background.lightnessF() < 0.5F;
     // Blue, vermilion, green, purple, teal: saturated shades on white, pale ones on black.
@@ -119,8 +119,8 @@ void apply_look(QCustomPlot& plot, const PlotLook& look) {
     for (int i = 0; i < plot.itemCount(); ++i) {
         QCPAbstractItem* item = plot.item(i);
         if (auto* line = qobject_cast<QCPItemStraightLine*>(item)) {
-            line->setPen(
-                QPen(mix(look.background, look.text, 0.75), look.line_width, Qt::DashLine));
+            line->setPen(QPen(blend_towards(look.background, look.text, 0.75), look.line_width,
+                              Qt::DashLine));
         } else if (auto* label = qobject_cast<QCPItemText*>(item)) {
             label->setColor(look.text);
             label->setFont(look.small_font);

@@ -1,6 +1,5 @@
 #include "legofeup/ui/refilter/refilter_dialog.hpp"
 
-#include <QApplication>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -10,10 +9,12 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QTableWidget>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <array>
 #include <exception>
@@ -22,6 +23,7 @@
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/ui/panels/message_line.hpp"
 #include "legofeup/ui/panels/setting_editor.hpp"
+#include "legofeup/ui/refilter/refilter_job.hpp"
 #include "legofeup/ui/refilter/refilter_metrics.hpp"
 #include "legofeup/ui/refilter/refilter_plots.hpp"
 #include "legofeup/ui/session/session.hpp"
@@ -108,6 +110,15 @@ RefilterDialog::RefilterDialog(const Session& session, QWidget* parent) : QDialo
             showMessage(error, true);
         }
     });
+    // The replay runs on a RefilterJob's thread; this bar shows how far it is.
+    progress_ = new QProgressBar(this);
+    progress_->setObjectName(QStringLiteral("refilterProgress"));
+    progress_->setRange(0, 100);
+    progress_->setFormat(tr("Re-filtering… %p%"));
+    progress_->setVisible(false);
+    poll_ = new QTimer(this);
+    poll_->setInterval(30);
+    connect(poll_, &QTimer::timeout, this, &RefilterDialog::pollJob);
     reset_ = new QPushButton(tr("Recorded values"), this);
     reset_->setEnabled(false);
     reset_->setAutoDefault(false);
@@ -119,6 +130,7 @@ RefilterDialog::RefilterDialog(const Session& session, QWidget* parent) : QDialo
     });
     buttons->addWidget(run_);
     buttons->addWidget(reset_);
+    buttons->addWidget(progress_, 1);
     buttons->addStretch(1);
     form->addRow(buttons);
     top->addWidget(settings, 1);
@@ -142,6 +154,8 @@ RefilterDialog::RefilterDialog(const Session& session, QWidget* parent) : QDialo
     layout->addWidget(plots_, 1);
     resize(1280, 860);
 }
+
+RefilterDialog::~RefilterDialog() = default;
 
 SettingEditor* RefilterDialog::editor(const std::string& key) const {
     const auto found = editors_.find(key);
@@ -182,7 +196,8 @@ QString RefilterDialog::openLog(const QString& path) {
         about += QStringLiteral("\n") + QString::fromStdString(note);
     }
     about_->setText(about);
-    log_ = std::move(log);
+    walls_ = walls_of(log.config);  // the world file is read once, here, not per replay
+    log_ = std::make_shared<const lessons::RunLog>(std::move(log));
     result_.reset();
     plots_->clear();
     show_refilter_metrics(*metrics_, std::nullopt, std::nullopt);
@@ -193,12 +208,8 @@ QString RefilterDialog::openLog(const QString& path) {
     reset_->setEnabled(true);
     resetToRecorded();
     // The recorded run at once (both replays the same), ready for the first "what if".
-    if (const QString error = refilterNow(); !error.isEmpty()) {
-        showMessage(error, true);
-        return {};
-    }
-    showMessage(tr("The recorded run. Change Q or R and press Enter: it is re-filtered at once."),
-                false);
+    startRefilter({}, tr("The recorded run. Change Q or R and press Enter: it is re-filtered "
+                         "at once."));
     return {};
 }
 
@@ -233,37 +244,60 @@ void RefilterDialog::propose(SettingEditor& editor, const lessons::SettingValue&
     }
     new_config_ = std::move(changed);
     editor.showValueOf(new_config_);  // the slider follows a typed value
-    // Replaying is quick (a fraction of a second): show the answer to "what if" at once.
-    if (const QString error = refilterNow(); !error.isEmpty()) {
-        showMessage(error, true);
-        return;
-    }
-    showMessage(tr("%1 = %2: re-filtered. ").arg(key, text) + message_->text(), false);
+    // Replaying takes a moment on the job's thread: the answer to "what if" comes when done.
+    startRefilter(tr("%1 = %2: re-filtered. ").arg(key, text), {});
 }
 
 QString RefilterDialog::refilterNow() {
     if (!log_) {
         return tr("Choose a run log first.");
     }
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    try {
-        result_ = lessons::refilter(*log_, new_config_);
-    } catch (const std::exception& error) {
-        QApplication::restoreOverrideCursor();
-        return QString::fromUtf8(error.what());
-    }
-    QApplication::restoreOverrideCursor();
-    plots_->showResult(*result_, walls_of(log_->config));
-    show_refilter_metrics(*metrics_, result_->old_metrics, result_->new_metrics);
-    showMessage(result_->reproduces_recording()
-                    ? tr("Same raw readings, two tunings. The replay with the recorded settings "
-                         "reproduces the recorded estimate exactly.")
-                    : tr("Same raw readings, two tunings. The replay with the recorded settings "
-                         "differs from the recorded estimate by up to %1 (the settings were "
-                         "changed during the recorded run).")
-                          .arg(result_->old_replay_deviation, 0, 'g', 3),
-                false);
+    startRefilter({}, {});
     return {};
+}
+
+void RefilterDialog::startRefilter(const QString& prefix, const QString& message) {
+    job_.reset();  // a replay of settings since replaced: cancelled and joined
+    job_ = std::make_unique<RefilterJob>(log_, new_config_);
+    done_prefix_ = prefix;
+    done_message_ = message;
+    progress_->setValue(0);
+    progress_->setVisible(true);
+    poll_->start();
+}
+
+void RefilterDialog::pollJob() {
+    if (!job_) {
+        poll_->stop();
+        return;
+    }
+    progress_->setValue(static_cast<int>(job_->progress() * 100.0));
+    std::optional<RefilterJob::Outcome> outcome = job_->take();
+    if (!outcome) {
+        return;
+    }
+    job_.reset();
+    poll_->stop();
+    progress_->setVisible(false);
+    if (!outcome->result) {
+        showMessage(QString::fromStdString(outcome->error), true);
+        emit refiltered();
+        return;
+    }
+    result_ = std::move(outcome->result);
+    plots_->showResult(*result_, walls_);
+    show_refilter_metrics(*metrics_, result_->old_metrics, result_->new_metrics);
+    const QString verdict =
+        result_->reproduces_recording()
+            ? tr(
+                "Same raw readings, two tunings. The replay with the recorded settings "
+                "reproduces the recorded estimate exactly.")
+            : tr("Same raw readings, two tunings. The replay with the recorded settings "
+                 "differs from the recorded estimate by up to %1 (the settings were "
+                 "changed during the recorded run).")
+                  .arg(result_->old_replay_deviation, 0, 'g', 3);
+    showMessage(done_message_.isEmpty() ? done_prefix_ + verdict : done_message_, false);
+    emit refiltered();
 }
 
 void RefilterDialog::showMessage(const QString& text, bool error) {

@@ -130,26 +130,42 @@ QString Session::exportTrace(const QString& path) const {
     return write_atomically(path, QByteArray::fromStdString(history_.trace_csv()));
 }
 
-void Session::closeRunLog() {
-    if (!run_log_) {
+void Session::finishRecording() {
+    if (!recorder_) {
         return;
     }
-    try {
-        run_log_->close();
-    } catch (const lessons::RunLogWriteError& error) {
-        emit problem(tr("The run log was not completed: %1").arg(error.what()));
-    }
-    run_log_.reset();
+    recorder_->finish();  // writes what is queued and ends the run log
+    showRecorderProblems();
+    recorder_.reset();
 }
 
-void Session::closeTrace() {
-    trace_writer_.reset();  // the writer refers to the file: it goes first
-    trace_file_.reset();
-    closeRunLog();
+void Session::showRecorderProblems() {
+    using Kind = RunRecorder::Problem::Kind;
+    for (const RunRecorder::Problem& trouble : recorder_->take_problems()) {
+        const QString detail = QString::fromStdString(trouble.detail);
+        switch (trouble.kind) {
+            case Kind::TraceNotCreated:
+                emit problem(tr("Cannot record into %1").arg(detail));
+                break;
+            case Kind::TraceStopped:
+                emit problem(tr("The trace stopped: %1 cannot be written").arg(detail));
+                break;
+            case Kind::RunLogNotCreated:
+                recording_file_.clear();
+                emit problem(tr("Cannot record the run log: %1").arg(detail));
+                break;
+            case Kind::RunLogStopped:
+                emit problem(tr("The run log stopped: %1").arg(detail));
+                break;
+            case Kind::RunLogNotCompleted:
+                emit problem(tr("The run log was not completed: %1").arg(detail));
+                break;
+        }
+    }
 }
 
 QString Session::setRecordingDirectory(const QString& directory) {
-    closeTrace();
+    finishRecording();
     recording_directory_.clear();
     recording_file_.clear();
     if (directory.isEmpty()) {
@@ -171,7 +187,7 @@ QString Session::setRecordingDirectory(const QString& directory) {
 }
 
 void Session::openTrace() {
-    closeTrace();
+    finishRecording();
     if (recording_directory_.isEmpty()) {
         return;
     }
@@ -183,31 +199,18 @@ void Session::openTrace() {
         name = QStringLiteral("trace-%1.csv").arg(n);
         log_name = QStringLiteral("run-%1.log").arg(n);
     }
-    trace_file_ =
-        std::make_unique<std::ofstream>(directory.filePath(name).toStdString(), std::ios::binary);
-    if (!*trace_file_) {
-        trace_file_.reset();
-        emit problem(tr("Cannot record into %1").arg(directory.filePath(name)));
-        return;
-    }
-    trace_writer_ = std::make_unique<lessons::TraceCsvWriter>(*trace_file_, resolved_.loop);
-    trace_file_->flush();
-
-    // The run log has the configuration the loop starts with (with an NXT's robot profile).
-    lessons::RunLogWriter::Options options;
-    options.program = "legofeup " + QCoreApplication::applicationVersion().toStdString();
-    options.link = link_.kind == LinkKind::Nxt        ? "gui, nxt"
-                   : link_.kind == LinkKind::External ? "gui, udp " + link_.address.toStdString()
-                                                      : "gui, embedded simulator";
-    const QString log_path = directory.filePath(log_name);
-    try {
-        run_log_ =
-            std::make_unique<lessons::RunLogWriter>(log_path.toStdString(), forThisRobot(resolved_),
-                                                    "LegoFeup Lab run", std::move(options));
-        recording_file_ = log_path;
-    } catch (const lessons::RunLogWriteError& error) {
-        emit problem(tr("Cannot record the run log: %1").arg(error.what()));
-    }
+    // The recorder's thread creates and writes both files. The run log has the
+    // configuration the loop starts with (with an NXT's robot profile).
+    RunRecorder::Files files;
+    files.trace = directory.filePath(name).toStdString();
+    files.run_log = directory.filePath(log_name).toStdString();
+    files.options.program = "legofeup " + QCoreApplication::applicationVersion().toStdString();
+    files.options.link = link_.kind == LinkKind::Nxt ? "gui, nxt"
+                         : link_.kind == LinkKind::External
+                             ? "gui, udp " + link_.address.toStdString()
+                             : "gui, embedded simulator";
+    recording_file_ = directory.filePath(log_name);
+    recorder_ = std::make_unique<RunRecorder>(std::move(files), forThisRobot(resolved_));
 }
 
 void Session::restartHistory() {
@@ -359,7 +362,7 @@ void Session::reset() {
     retireRun();
     embedded_.reset();
     emulated_nxt_.reset();
-    closeTrace();
+    finishRecording();
     status_ = {};
     phase_ = RunPhase::Idle;
     restartHistory();
@@ -450,21 +453,9 @@ void Session::drain() {
         emit problem(QString::fromStdString(note));
     }
     if (!batch.empty()) {
-        if (trace_writer_) {
-            for (const RunSample& sample : batch) {
-                trace_writer_->on_step(sample.snapshot, truth_or_unknown(sample));
-            }
-            trace_file_->flush();
-        }
-        if (run_log_) {
-            try {
-                for (const RunSample& sample : batch) {
-                    run_log_->on_step(sample.snapshot, truth_or_unknown(sample));
-                }
-            } catch (const lessons::RunLogWriteError& error) {
-                run_log_.reset();  // a recording that fails says so once, then stops
-                emit problem(tr("The run log stopped: %1").arg(error.what()));
-            }
+        if (recorder_) {
+            recorder_->append(batch);  // written on the recorder's thread
+            showRecorderProblems();
         }
         const int first = static_cast<int>(history_.size());
         const int count = static_cast<int>(batch.size());
@@ -475,7 +466,7 @@ void Session::drain() {
     if (status.phase != phase_) {
         phase_ = status.phase;
         if (!running()) {
-            closeRunLog();  // the run is over: its log gets its end line
+            finishRecording();  // the run is over: its log gets its end line
         }
         if (phase_ == RunPhase::Failed) {
             emit problem(tr("The link failed: %1").arg(QString::fromStdString(status.message)));

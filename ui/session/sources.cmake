@@ -4,6 +4,7 @@ list(APPEND LEGOFEUP_UI_SOURCES
     session/nxt_address.cpp
     session/session.cpp
     session/run_history.cpp
+    session/run_recorder.cpp
     session/run_samples.cpp
     include/legofeup/ui/session/session.hpp  # Q_OBJECT: listed for AUTOMOC
 )

@@ -44,7 +44,8 @@ void replay_run_log(const RunLog& log, LegoFeupLoop& loop,
     }
 }
 
-RefilterResult refilter(const RunLog& log, const RunConfig& new_config) {
+RefilterResult refilter(const RunLog& log, const RunConfig& new_config,
+                        const RefilterProgress& progress) {
     LegoFeupLoop old_loop(resolve(log.config).loop);
     LegoFeupLoop new_loop(resolve(new_config).loop);
 
@@ -62,6 +63,14 @@ RefilterResult refilter(const RunLog& log, const RunConfig& new_config) {
         }
     };
 
+    const std::size_t total = 2 * log.records.size();
+    std::size_t done = 0;
+    const auto count_step = [&] {
+        if (progress && !progress(++done, total)) {
+            throw RefilterCancelled();
+        }
+    };
+
     std::size_t index = 0;
     replay_run_log(log, old_loop, [&](const RunLogRecord& record, const LoopSnapshot& snapshot) {
         RefilterStep& step = result.steps[index++];
@@ -73,6 +82,7 @@ RefilterResult refilter(const RunLog& log, const RunConfig& new_config) {
         result.old_replay_deviation =
             std::max(result.old_replay_deviation, deviation(record, snapshot));
         add(old_metrics, record, snapshot);
+        count_step();
     });
     index = 0;
     // Open loop: new_loop's controller computes a command at every step, but the robot
@@ -82,6 +92,7 @@ RefilterResult refilter(const RunLog& log, const RunConfig& new_config) {
         step.new_estimate = snapshot.estimate;
         step.new_covariance = snapshot.covariance;
         add(new_metrics, record, snapshot);
+        count_step();
     });
     result.old_metrics = old_metrics.result();
     result.new_metrics = new_metrics.result();

@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "legofeup/core/legofeup_loop.hpp"
@@ -49,9 +50,21 @@ struct RefilterResult {
     bool reproduces_recording() const { return old_replay_deviation == 0.0; }
 };
 
+/// Told how far a re-filtering is, `done` of `total` replayed steps (total is twice the
+/// log's records: two replays), after every step; returning false stops it (RefilterCancelled).
+/// The GUI runs refilter() on a worker with this as its progress bar and its cancel button.
+using RefilterProgress = std::function<bool(std::size_t done, std::size_t total)>;
+
+/// Thrown by refilter() when its RefilterProgress returned false.
+class RefilterCancelled : public std::runtime_error {
+  public:
+    RefilterCancelled() : std::runtime_error("re-filtering cancelled") {}
+};
+
 /// Replays `log` through a loop built from its recorded configuration and through one built
 /// from `new_config` (resolve(new_config).loop), open loop (see above). Throws InputError if
-/// `new_config` does not resolve.
-RefilterResult refilter(const RunLog& log, const RunConfig& new_config);
+/// `new_config` does not resolve, RefilterCancelled if `progress` stopped it.
+RefilterResult refilter(const RunLog& log, const RunConfig& new_config,
+                        const RefilterProgress& progress = {});
 
 }  // namespace legofeup::lessons

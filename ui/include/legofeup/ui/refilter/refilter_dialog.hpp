@@ -8,8 +8,10 @@
 
 #include <QDialog>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "legofeup/lessons/config_schema.hpp"
 #include "legofeup/lessons/recording/refilter.hpp"
@@ -17,11 +19,14 @@
 
 class QLabel;
 class QLineEdit;
+class QProgressBar;
 class QPushButton;
+class QTimer;
 class QTableWidget;
 
 namespace legofeup::ui {
 
+class RefilterJob;
 class RefilterPlots;
 class Session;
 class SettingEditor;
@@ -32,13 +37,17 @@ class RefilterDialog : public QDialog {
   public:
     /// Starts in the folder the session records into (if it does).
     explicit RefilterDialog(const Session& session, QWidget* parent = nullptr);
+    /// Cancels a running replay and waits for its thread (it stops at its next step).
+    ~RefilterDialog() override;
 
     /// Reads a run log and shows its recorded Q and R. Returns "" or the problem (file:line);
     /// on error the log shown before stays.
     QString openLog(const QString& path);
-    /// Replays the log with the recorded and with the new settings and shows both. Returns ""
-    /// or why not.
+    /// Starts replaying the log with the recorded and with the new settings (on a worker);
+    /// both are shown, and refiltered() emitted, when it is done. Returns "" or why not.
     QString refilterNow();
+    /// A replay is running (its outcome not shown yet).
+    bool busy() const { return job_ != nullptr; }
 
     /// The editor of filter.q11, q22, r11 or r22.
     SettingEditor* editor(const std::string& key) const;
@@ -47,16 +56,28 @@ class RefilterDialog : public QDialog {
     RefilterPlots& plots() const { return *plots_; }
     QTableWidget& metricsTable() const { return *metrics_; }
 
+  signals:
+    /// A replay finished and its result (or its error) is shown.
+    void refiltered();
+
   private:
     void chooseLog();
+    /// Starts a replay of new_config_; when done, shows `message` or else `prefix` and the
+    /// verdict.
+    void startRefilter(const QString& prefix, const QString& message);
+    void pollJob();
     void propose(SettingEditor& editor, const lessons::SettingValue& value, const QString& text);
     void resetToRecorded();
     void showMessage(const QString& text, bool error);
 
     QString folder_;
-    std::optional<lessons::RunLog> log_;
+    std::shared_ptr<const lessons::RunLog> log_;  ///< shared with the running job
+    std::vector<Wall> walls_;                     ///< the log's world, for the overlay
     lessons::RunConfig new_config_;
     std::optional<lessons::RefilterResult> result_;
+    std::unique_ptr<RefilterJob> job_;
+    QString done_prefix_;
+    QString done_message_;
 
     QLineEdit* path_ = nullptr;
     QLabel* about_ = nullptr;
@@ -64,6 +85,8 @@ class RefilterDialog : public QDialog {
     QPushButton* run_ = nullptr;
     QPushButton* reset_ = nullptr;
     QLabel* message_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QTimer* poll_ = nullptr;
     RefilterPlots* plots_ = nullptr;
     QTableWidget* metrics_ = nullptr;
 };

@@ -16,7 +16,6 @@
 #include <QStringList>
 #include <QTimer>
 #include <atomic>
-#include <fstream>
 #include <future>
 #include <memory>
 
@@ -25,9 +24,9 @@
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/run_config.hpp"
-#include "legofeup/lessons/trace_csv.hpp"
 #include "legofeup/ui/run_history.hpp"
 #include "legofeup/ui/session/live_run.hpp"
+#include "legofeup/ui/session/run_recorder.hpp"
 
 namespace legofeup::simserver {
 class SimServer;
@@ -160,10 +159,13 @@ class Session : public QObject {
     bool startEmulatedNxt(lessons::NxtTarget& target);
     /// `run` with the NXT run's robot profile applied to the filter (as it is without one).
     lessons::ResolvedRun forThisRobot(lessons::ResolvedRun run) const;
+    /// Starts recording this run into the recording folder (a RunRecorder of its own).
     void openTrace();
-    void closeTrace();
-    /// Writes the run log's end line (the run is over); keeps the trace open for the rest.
-    void closeRunLog();
+    /// Ends the recording (the run is over, or another starts): what is queued is written,
+    /// the run log gets its end line, and the recorder's problems are shown.
+    void finishRecording();
+    /// Shows (problem()) what went wrong on the recorder's thread since the last call.
+    void showRecorderProblems();
 
     lessons::RunConfig config_;
     lessons::ResolvedRun resolved_;
@@ -184,9 +186,7 @@ class Session : public QObject {
     QElapsedTimer since_drain_;
 
     QString recording_directory_;
-    std::unique_ptr<std::ofstream> trace_file_;
-    std::unique_ptr<lessons::TraceCsvWriter> trace_writer_;
-    std::unique_ptr<lessons::RunLogWriter> run_log_;
+    std::unique_ptr<RunRecorder> recorder_;  ///< writes trace.csv and run.log off this thread
     QString recording_file_;
 };
 
