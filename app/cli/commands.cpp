@@ -81,7 +81,7 @@ LinkChoice choose_link(const RunOptions& options) {
 /// What an NXT run adds to the summary: the link's health, and why it ended early if it did.
 struct NxtRunReport {
     lessons::RunResult result;
-    comms::nxt::LinkQuality quality;
+    lessons::LinkHealth health;
     bool truth_known = false;
     std::string interrupted;  ///< the link failure that ended the run (empty: it did not)
 };
@@ -112,24 +112,24 @@ NxtRunReport run_on_nxt(const lessons::ResolvedRun& run, const lessons::NxtTarge
         report.interrupted = failure.what();
     }
     connection->close();
-    report.quality = connection->nxt_quality().value_or(comms::nxt::LinkQuality{});
+    report.health = connection->health();
     return report;
 }
 
 nlohmann::json nxt_to_json(const LinkChoice& link, const NxtRunReport& report) {
-    const comms::nxt::LinkQuality& q = report.quality;
+    const lessons::LinkHealth& q = report.health;
     nlohmann::json json = {
         {"kind", "nxt"},
         {"address", link.nxt->link.address.to_string()},
         {"mode", link.nxt->link.mode == comms::nxt::CycleMode::Relay ? "relay" : "direct"},
         {"truth", link.nxt->truth ? link.nxt->truth->to_string() : "unknown (real robot)"},
-        {"cycles", q.cycles},
+        {"cycles", q.frames},
         {"rate_hz", q.rate_hz()},
         {"mean_cycle_s", q.mean_cycle_seconds},
         {"max_cycle_s", q.max_cycle_seconds},
         {"timeouts", q.timeouts},
         {"rejected_replies", q.rejected_replies},
-        {"invalid_ir_readings", q.invalid_ir_readings},
+        {"invalid_ir_readings", q.invalid_readings},
         {"battery_mv", q.battery_millivolts ? nlohmann::json(*q.battery_millivolts) : nullptr},
     };
     if (!report.interrupted.empty()) {
@@ -139,11 +139,11 @@ nlohmann::json nxt_to_json(const LinkChoice& link, const NxtRunReport& report) {
 }
 
 void print_nxt_link(const NxtRunReport& report) {
-    const comms::nxt::LinkQuality& q = report.quality;
+    const lessons::LinkHealth& q = report.health;
     std::printf(
         "  NXT link: %llu cycles at %.1f Hz (mean %.1f ms, max %.1f ms), %llu timeouts, "
         "%llu rejected replies",
-        static_cast<unsigned long long>(q.cycles), q.rate_hz(), 1e3 * q.mean_cycle_seconds,
+        static_cast<unsigned long long>(q.frames), q.rate_hz(), 1e3 * q.mean_cycle_seconds,
         1e3 * q.max_cycle_seconds, static_cast<unsigned long long>(q.timeouts),
         static_cast<unsigned long long>(q.rejected_replies));
     if (q.battery_millivolts) {

@@ -26,6 +26,38 @@ class LatestTruth final : public TruthSource {
     comms::TruthReceiver receiver_;
 };
 
+LinkState state_of(comms::nxt::LinkState state) {
+    switch (state) {
+        case comms::nxt::LinkState::Connecting:
+            return LinkState::Connecting;
+        case comms::nxt::LinkState::Connected:
+            return LinkState::Connected;
+        case comms::nxt::LinkState::Failed:
+            return LinkState::Failed;
+        case comms::nxt::LinkState::Disconnected:
+            break;
+    }
+    return LinkState::Disconnected;
+}
+
+/// The NXT link's quality in the words every link shares.
+LinkHealth health_of(const comms::nxt::LinkQuality& quality,
+                     const comms::nxt::NxtLinkOptions& options) {
+    LinkHealth health;
+    health.state = state_of(quality.state);
+    health.address = options.address.to_string();
+    health.last_error = quality.last_error;
+    health.frames = quality.cycles;
+    health.timeouts = quality.timeouts;
+    health.rejected_replies = quality.rejected_replies;
+    health.invalid_readings = quality.invalid_ir_readings;
+    health.last_cycle_seconds = quality.last_cycle_seconds;
+    health.mean_cycle_seconds = quality.mean_cycle_seconds;
+    health.max_cycle_seconds = quality.max_cycle_seconds;
+    health.battery_millivolts = quality.battery_millivolts;
+    return health;
+}
+
 class NxtRobotConnection final : public RobotConnection {
   public:
     explicit NxtRobotConnection(const NxtTarget& target) : link_(target.link) {
@@ -52,7 +84,15 @@ class NxtRobotConnection final : public RobotConnection {
                                                                        : "direct commands")
                + ")";
     }
-    std::optional<comms::nxt::LinkQuality> nxt_quality() const override { return link_.quality(); }
+    /// The brick has no truth of its own (an emulated one's comes from its simulator), no
+    /// noise to set and nobody to lift it; its clock runs on; it has a battery and a cycle.
+    LinkCapabilities capabilities() const override {
+        LinkCapabilities can;
+        can.ground_truth = truth_.has_value();
+        can.robot_health = true;
+        return can;
+    }
+    LinkHealth health() const override { return health_of(link_.quality(), link_.options()); }
 
   private:
     std::optional<LatestTruth> truth_;

@@ -76,6 +76,18 @@ void UdpRobotConnection::close() {
     }
 }
 
+LinkHealth UdpRobotConnection::health() const {
+    const comms::LinkCounters counters = link_.counters();
+    LinkHealth health;
+    health.state = link_.connected() ? LinkState::Connected : LinkState::Disconnected;
+    health.address = describe();
+    health.frames = counters.frames.accepted;
+    health.frames_lost = counters.frames.missing;
+    health.timeouts = counters.timeouts;
+    health.rejected_replies = counters.malformed;
+    return health;
+}
+
 UdpTarget parse_udp_target(const std::string& url, int truth_port, int control_port) {
     const auto robot = comms::parse_udp_url(url);
     if (!robot || robot->port == 0 || (truth_port == 0 && robot->port > 65533)) {

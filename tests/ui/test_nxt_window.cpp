@@ -91,8 +91,8 @@ class NxtWindowTest : public QObject {
         QVERIFY(!robot.reconnectButton()->isVisible());
         QVERIFY2(statusBarRobotLine()->text().startsWith(QStringLiteral("NXT: Connected · 7.80 V")),
                  qPrintable(statusBarRobotLine()->text()));
-        QVERIFY(session_->nxtQuality().has_value());
-        QVERIFY(session_->nxtQuality()->rate_hz() > 5.0);
+        QVERIFY(session_->robotHealth() != nullptr);
+        QVERIFY(session_->robotHealth()->rate_hz() > 5.0);
 
         window_->runToolBar().stopAction()->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(session_->phase(), RunPhase::Stopped, kPatienceMs);
@@ -185,13 +185,16 @@ class NxtWindowTest : public QObject {
 
     void theStatusWordsAreTheLinksState() {
         LiveRunStatus status;
-        comms::nxt::LinkQuality quality;
-        quality.state = comms::nxt::LinkState::Connected;
+        lessons::LinkHealth quality;
+        quality.state = lessons::LinkState::Connected;
         quality.battery_millivolts = 6420;
-        quality.cycles = 100;
+        quality.frames = 100;
         quality.mean_cycle_seconds = 0.0625;
         quality.timeouts = 3;
-        status.nxt = quality;
+        status.health = quality;
+        // A simulator's health (its stream's counters) is not a robot's: no status line.
+        QCOMPARE(robot_status_line(RunPhase::Running, status), QString());
+        status.capabilities.robot_health = true;
         QCOMPARE(robot_status_line(RunPhase::Running, status),
                  QStringLiteral("NXT: Connected · 6.42 V (low) · 63 ms (16.0 Hz) · 3 timeouts"));
         QVERIFY(battery_low(quality));

@@ -52,35 +52,35 @@ QString connection_state_text(RunPhase phase, const LiveRunStatus& status) {
         case RunPhase::Paused:
             break;
     }
-    if (status.nxt) {
-        switch (status.nxt->state) {
-            case comms::nxt::LinkState::Connecting:
+    if (status.health) {
+        switch (status.health->state) {
+            case lessons::LinkState::Connecting:
                 return QObject::tr("Connecting…");
-            case comms::nxt::LinkState::Failed:
+            case lessons::LinkState::Failed:
                 return QObject::tr("Failed: %1")
-                    .arg(QString::fromStdString(status.nxt->last_error));
-            case comms::nxt::LinkState::Disconnected:
+                    .arg(QString::fromStdString(status.health->last_error));
+            case lessons::LinkState::Disconnected:
                 return QObject::tr("Disconnected");
-            case comms::nxt::LinkState::Connected:
+            case lessons::LinkState::Connected:
                 break;
         }
     }
     return QObject::tr("Connected");
 }
 
-QString battery_text(const comms::nxt::LinkQuality& quality) {
+QString battery_text(const lessons::LinkHealth& quality) {
     if (!quality.battery_millivolts) {
         return {};
     }
     return QStringLiteral("%1 V").arg(*quality.battery_millivolts / 1000.0, 0, 'f', 2);
 }
 
-bool battery_low(const comms::nxt::LinkQuality& quality) {
+bool battery_low(const lessons::LinkHealth& quality) {
     return quality.battery_millivolts && *quality.battery_millivolts / 1000.0 < kLowBatteryVolts;
 }
 
-QString cycle_text(const comms::nxt::LinkQuality& quality) {
-    if (quality.cycles == 0 || quality.mean_cycle_seconds <= 0.0) {
+QString cycle_text(const lessons::LinkHealth& quality) {
+    if (quality.frames == 0 || quality.mean_cycle_seconds <= 0.0) {
         return {};
     }
     return QStringLiteral("%1 ms (%2 Hz)")
@@ -89,22 +89,23 @@ QString cycle_text(const comms::nxt::LinkQuality& quality) {
 }
 
 QString robot_status_line(RunPhase phase, const LiveRunStatus& status) {
-    if (!status.nxt) {
+    const lessons::LinkHealth* robot = status.robot_health();
+    if (robot == nullptr) {
         return {};
     }
     // The state's word only: the reason of a failure is in the Robot dock and the message.
     QString state = connection_state_text(phase, status);
     state = state.left(state.indexOf(QLatin1Char(':')));
     QStringList parts{QObject::tr("NXT: %1").arg(state)};
-    if (const QString battery = battery_text(*status.nxt); !battery.isEmpty()) {
-        parts << (battery_low(*status.nxt) ? QObject::tr("%1 (low)").arg(battery) : battery);
+    if (const QString battery = battery_text(*robot); !battery.isEmpty()) {
+        parts << (battery_low(*robot) ? QObject::tr("%1 (low)").arg(battery) : battery);
     }
-    if (const QString cycle = cycle_text(*status.nxt); !cycle.isEmpty()) {
+    if (const QString cycle = cycle_text(*robot); !cycle.isEmpty()) {
         parts << cycle;
     }
-    if (status.nxt->timeouts > 0) {
-        parts << (status.nxt->timeouts == 1 ? QObject::tr("1 timeout")
-                                            : QObject::tr("%1 timeouts").arg(status.nxt->timeouts));
+    if (robot->timeouts > 0) {
+        parts << (robot->timeouts == 1 ? QObject::tr("1 timeout")
+                                       : QObject::tr("%1 timeouts").arg(robot->timeouts));
     }
     return parts.join(QStringLiteral(" · "));
 }
@@ -162,7 +163,7 @@ void RobotStatusView::refresh() {
     }
     state_->setPalette(state_palette);
 
-    const std::optional<comms::nxt::LinkQuality>& nxt = status.nxt;
+    const lessons::LinkHealth* nxt = status.robot_health();
     const bool on_nxt = nxt || session_.linkChoice().kind == LinkKind::Nxt;
     const QString none = on_nxt ? tr("—") : tr("— (a simulator)");
     const QString battery = nxt ? battery_text(*nxt) : QString();
@@ -180,11 +181,11 @@ void RobotStatusView::refresh() {
                                           .arg(cycle)
                                           .arg(nxt->last_cycle_seconds * 1000.0, 0, 'f', 0)
                                           .arg(nxt->max_cycle_seconds * 1000.0, 0, 'f', 0)
-                                          .arg(nxt->cycles));
+                                          .arg(nxt->frames));
     timeouts_->setText(nxt ? tr("%1 (replies refused: %2, IR readings invalid: %3)")
                                  .arg(nxt->timeouts)
                                  .arg(nxt->rejected_replies)
-                                 .arg(nxt->invalid_ir_readings)
+                                 .arg(nxt->invalid_readings)
                            : none);
     reconnect_->setVisible(phase == RunPhase::Failed);
 }

@@ -12,24 +12,21 @@
 namespace legofeup::ui {
 namespace {
 
-/// Why a connection's NXT link failed, naming the link; empty while it has not.
+/// Why a connection's link failed, naming the link; empty while it has not.
 std::string link_failure(const lessons::RobotConnection& connection) {
-    const std::optional<comms::nxt::LinkQuality> quality = connection.nxt_quality();
-    if (!quality || quality->state != comms::nxt::LinkState::Failed) {
+    const lessons::LinkHealth health = connection.health();
+    if (health.state != lessons::LinkState::Failed) {
         return {};
     }
     const std::string link = connection.describe();  // "NXT at tcp:127.0.0.1:5700 (…)"
-    if (quality->last_error.empty()) {
+    if (health.last_error.empty()) {
         return link + ": the link failed";
     }
     // The link's own message usually names its address already: say it once.
-    const std::size_t at = link.find(" at ");
-    const std::string address =
-        at == std::string::npos ? link : link.substr(at + 4, link.find(" (", at) - at - 4);
-    if (quality->last_error.find(address) != std::string::npos) {
-        return quality->last_error;
+    if (!health.address.empty() && health.last_error.find(health.address) != std::string::npos) {
+        return health.last_error;
     }
-    return link + ": " + quality->last_error;
+    return link + ": " + health.last_error;
 }
 
 }  // namespace
@@ -102,15 +99,14 @@ void LiveRun::set_phase(RunPhase phase, std::string message) {
     notify_();
 }
 
-void LiveRun::publish(RunSample sample, std::uint64_t frames_missing,
-                      std::optional<comms::nxt::LinkQuality> nxt) {
+void LiveRun::publish(RunSample sample, std::uint64_t frames_missing, lessons::LinkHealth health) {
     bool first = false;
     {
         const std::lock_guard lock(mutex_);
         status_.steps = sample.snapshot.step;
         status_.time = sample.snapshot.time;
         status_.frames_missing = frames_missing;
-        status_.nxt = std::move(nxt);
+        status_.health = std::move(health);
         first = pending_.empty();
         pending_.push_back(std::move(sample));
     }
@@ -136,7 +132,9 @@ void LiveRun::apply(Requests requests, LegoFeupLoop& loop, lessons::RobotConnect
         loop.reconfigure(requests.run->loop);
         if (lessons::noise_settings_of(requests.run->robot)
             != lessons::noise_settings_of(run_.robot)) {
-            connection.set_noise(requests.run->robot);  // a real robot ignores it
+            if (connection.capabilities().live_noise) {  // a real robot has no noise to set
+                connection.set_noise(requests.run->robot);
+            }
         }
         run_ = std::move(*requests.run);
     }
@@ -177,7 +175,8 @@ void LiveRun::work(const std::stop_token& stop) {
         {
             const std::lock_guard lock(mutex_);
             status_.link = connection->describe();
-            status_.nxt = connection->nxt_quality();
+            status_.capabilities = connection->capabilities();
+            status_.health = connection->health();
         }
         LegoFeupLoop loop(run_.loop);
         lessons::LinkStepper stepper(run_.config.simulator.control_period);
@@ -192,7 +191,7 @@ void LiveRun::work(const std::stop_token& stop) {
                 }
             }
             publish(make_run_sample(snapshot, last_truth), stepper.frames_missing(),
-                    connection->nxt_quality());
+                    connection->health());
             return is_over(snapshot);
         };
         while (!stop.stop_requested()) {
@@ -225,7 +224,7 @@ void LiveRun::work(const std::stop_token& stop) {
             }
             connection->close();
             const std::lock_guard lock(mutex_);
-            status_.nxt = connection->nxt_quality();
+            status_.health = connection->health();
         }
         set_phase(RunPhase::Failed, std::move(message));
     }

@@ -387,6 +387,10 @@ QString Session::teleportRefusal() const {
     if (!run_ || !running()) {
         return tr("Start a run first: the robot is kidnapped from a running simulator");
     }
+    if (!status_.capabilities.teleport) {  // the connection says so (or is not taken yet)
+        return tr("The robot of %1 cannot be moved from here")
+            .arg(QString::fromStdString(status_.link));
+    }
     return {};
 }
 

@@ -1,15 +1,17 @@
 #pragma once
 // A robot taken for a run, whatever it is: a simulator server over UDP, or a LEGO NXT (real
 // or emulated) over Bluetooth, a serial port or TCP. The CLI's runs and the GUI's live runs
-// talk to this, so the loop runs on the robot exactly as on the simulator.
+// talk to this, so the loop runs on the robot exactly as on the simulator. A connection says
+// what it can do (capabilities) and how it is doing (health): callers ask it, they never
+// decide from the kind of link.
 
 #include <memory>
 #include <optional>
 #include <string>
 
-#include "legofeup/comms/nxt/nxt_link.hpp"
 #include "legofeup/core/robot_link.hpp"
 #include "legofeup/core/truth_source.hpp"
+#include "legofeup/lessons/link_health.hpp"
 #include "legofeup/sim/robot_spec.hpp"
 
 namespace legofeup::lessons {
@@ -35,8 +37,10 @@ class RobotConnection {
     virtual void close() = 0;
     /// "udp://127.0.0.1:5600", "NXT at bt:00:16:53:01:02:03 (direct commands)".
     virtual std::string describe() const = 0;
-    /// The NXT link's health (cycle time, timeouts, battery); nullopt for a simulator.
-    virtual std::optional<comms::nxt::LinkQuality> nxt_quality() const { return std::nullopt; }
+    /// What it can do: truth, live noise, teleport, a stopping clock, a robot's own health.
+    virtual LinkCapabilities capabilities() const = 0;
+    /// How it is doing now (state, address, counters, battery where there is one).
+    virtual LinkHealth health() const = 0;
 };
 
 }  // namespace legofeup::lessons

@@ -53,6 +53,10 @@ class UdpRobotConnection final : public RobotConnection {
     /// Stops the motors and releases the robot (once).
     void close() override;
     std::string describe() const override { return "udp://" + robot_.to_string(); }
+    /// A simulator server can do everything but report a battery.
+    LinkCapabilities capabilities() const override { return {true, true, true, true, false}; }
+    /// The robot stream's counters: frames accepted and missing, timeouts, malformed.
+    LinkHealth health() const override;
 
   private:
     comms::Endpoint robot_;

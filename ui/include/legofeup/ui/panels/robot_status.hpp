@@ -22,10 +22,10 @@ inline constexpr double kLowBatteryVolts = 6.5;
 /// "Connected", "Failed: <why>", "Disconnected".
 QString connection_state_text(RunPhase phase, const LiveRunStatus& status);
 /// "7.62 V" (empty before the first reading).
-QString battery_text(const comms::nxt::LinkQuality& quality);
-bool battery_low(const comms::nxt::LinkQuality& quality);
+QString battery_text(const lessons::LinkHealth& quality);
+bool battery_low(const lessons::LinkHealth& quality);
 /// "55 ms (18.2 Hz)": the mean cycle time and rate (empty before the first cycle).
-QString cycle_text(const comms::nxt::LinkQuality& quality);
+QString cycle_text(const lessons::LinkHealth& quality);
 /// The status bar's part for an NXT run: "NXT: Connected · 7.62 V · 55 ms (18.2 Hz) ·
 /// 2 timeouts" ("NXT: Failed · …" without the reason, which the dock shows); empty for a
 /// simulator.

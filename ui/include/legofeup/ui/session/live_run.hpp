@@ -25,7 +25,6 @@
 #include <thread>
 #include <vector>
 
-#include "legofeup/comms/nxt/nxt_link.hpp"
 #include "legofeup/core/legofeup_loop.hpp"
 #include "legofeup/lessons/robot_connection.hpp"
 #include "legofeup/lessons/run_config.hpp"
@@ -50,9 +49,17 @@ struct LiveRunStatus {
     std::uint64_t steps = 0;
     std::uint64_t frames_missing = 0;  ///< control periods run without a frame
     double time = 0.0;                 ///< time of the latest step, s
-    /// An NXT link's health (state, cycle time, timeouts, battery), refreshed every step;
-    /// nullopt for a simulator.
-    std::optional<comms::nxt::LinkQuality> nxt;
+    /// What the robot taken can do (RobotConnection::capabilities()); none before.
+    lessons::LinkCapabilities capabilities;
+    /// How its link is doing (state, counters, cycle time, battery), refreshed every step;
+    /// nullopt before the robot is taken.
+    std::optional<lessons::LinkHealth> health;
+
+    /// The health of a robot that reports its own (an NXT's battery and cycle); null for a
+    /// simulator, whose health is its stream's counters only.
+    const lessons::LinkHealth* robot_health() const {
+        return capabilities.robot_health && health ? &*health : nullptr;
+    }
 };
 
 class LiveRun {
@@ -102,8 +109,7 @@ class LiveRun {
 
     void work(const std::stop_token& stop);
     void apply(Requests requests, LegoFeupLoop& loop, lessons::RobotConnection& connection);
-    void publish(RunSample sample, std::uint64_t frames_missing,
-                 std::optional<comms::nxt::LinkQuality> nxt);
+    void publish(RunSample sample, std::uint64_t frames_missing, lessons::LinkHealth health);
     /// Throws if the connection reports its link failed (an NXT that stopped answering).
     static void check_link(const lessons::RobotConnection& connection);
     void set_phase(RunPhase phase, std::string message = {});

@@ -94,7 +94,8 @@ class Session : public QObject {
     /// Takes effect at the next start.
     void setLinkChoice(const LinkChoice& choice);
     /// The latest NXT link's health (nullopt for a simulator, or before an NXT run).
-    const std::optional<comms::nxt::LinkQuality>& nxtQuality() const { return status_.nxt; }
+    /// The robot's own health (an NXT's battery and cycle); null for a simulator.
+    const lessons::LinkHealth* robotHealth() const { return status_.robot_health(); }
 
     /// Why the robot cannot be kidnapped now ("" when it can): a real or emulated NXT has no
     /// simulator to move it, and there must be a run going.
