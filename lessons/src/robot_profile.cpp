@@ -34,16 +34,20 @@ struct ProfileField {
     std::string& (*text)(RobotProfile&) = nullptr;
 };
 
-ProfileField real(std::string_view key, std::string_view help, double& (*get)(RobotProfile&)) {
+ProfileField real_field(std::string_view key, std::string_view help,
+                        double& (*get)(RobotProfile&)) {
     return {.key = key, .help = help, .real = get};
 }
-ProfileField integer(std::string_view key, std::string_view help, int& (*get)(RobotProfile&)) {
+ProfileField integer_field(std::string_view key, std::string_view help,
+                           int& (*get)(RobotProfile&)) {
     return {.key = key, .help = help, .integer = get};
 }
-ProfileField boolean(std::string_view key, std::string_view help, bool& (*get)(RobotProfile&)) {
+ProfileField boolean_field(std::string_view key, std::string_view help,
+                           bool& (*get)(RobotProfile&)) {
     return {.key = key, .help = help, .boolean = get};
 }
-ProfileField text(std::string_view key, std::string_view help, std::string& (*get)(RobotProfile&)) {
+ProfileField text_field(std::string_view key, std::string_view help,
+                        std::string& (*get)(RobotProfile&)) {
     return {.key = key, .help = help, .text = get};
 }
 
@@ -51,57 +55,65 @@ ProfileField text(std::string_view key, std::string_view help, std::string& (*ge
 const std::vector<ProfileField>& profile_fields() {
     using P = RobotProfile;
     static const std::vector<ProfileField> fields = {
-        text("name", "what this robot is called", [](P& p) -> std::string& { return p.name; }),
-        text("bluetooth_address",
-             "the brick's Bluetooth address, \"00:16:53:XX:XX:XX\"; \"\" = choose when connecting",
-             [](P& p) -> std::string& { return p.bluetooth_address; }),
-        text("relay_program",
-             "program on the brick that relays readings (e.g. \"legofeup.rxe\"); \"\" = direct "
-             "commands only",
-             [](P& p) -> std::string& { return p.relay_program; }),
-        real("right_wheel_diameter", "D_R, effective diameter of the right wheel (wheel 1), m",
-             [](P& p) -> double& { return p.right_wheel_diameter; }),
-        real("left_wheel_diameter", "D_L, effective diameter of the left wheel (wheel 2), m",
-             [](P& p) -> double& { return p.left_wheel_diameter; }),
-        real("wheel_base", "b, effective distance between the wheels' contact points, m",
-             [](P& p) -> double& { return p.wheel_base; }),
-        real("codo_right",
-             "Codo1, counts per metre of the right wheel; left out = 360/(pi*right_wheel_diameter)",
-             [](P& p) -> double& { return p.codo_right; }),
-        real("codo_left",
-             "Codo2, counts per metre of the left wheel; left out = 360/(pi*left_wheel_diameter)",
-             [](P& p) -> double& { return p.codo_left; }),
-        real("power_per_meter_per_second",
-             "motor power (-100..100) per m/s of wheel speed, regulated motors",
-             [](P& p) -> double& { return p.power_per_meter_per_second; }),
-        integer("right_motor_port", "output port of the right motor: 0 = A, 1 = B, 2 = C",
-                [](P& p) -> int& { return p.right_motor_port; }),
-        integer("left_motor_port", "output port of the left motor: 0 = A, 1 = B, 2 = C",
-                [](P& p) -> int& { return p.left_motor_port; }),
-        integer("front_ir_port", "input port of the front IR sensor (d_s1): 0 = port 1 ... 3 = 4",
-                [](P& p) -> int& { return p.front_ir_port; }),
-        integer("rear_ir_port", "input port of the rear IR sensor (d_s2): 0 = port 1 ... 3 = 4",
-                [](P& p) -> int& { return p.rear_ir_port; }),
-        boolean("reversed_motors", "true if positive motor power drives the robot backwards",
-                [](P& p) -> bool& { return p.reversed_motors; }),
-        real("ir_curve.a", "a, unit of the fit: metres per fit unit (0.01: the fit is in cm)",
-             [](P& p) -> double& { return p.ir_curve.a; }),
-        real("ir_curve.c_m", "C_M, constant of multiplication",
-             [](P& p) -> double& { return p.ir_curve.c_m; }),
-        real("ir_curve.c_r", "C_R, constant of linearisation, A/D counts",
-             [](P& p) -> double& { return p.ir_curve.c_r; }),
-        real("ir_curve.b", "b, offset of the fit, fit units",
-             [](P& p) -> double& { return p.ir_curve.b; }),
-        real("ir_curve.min_range", "closer readings are not trusted, m",
-             [](P& p) -> double& { return p.ir_curve.min_range; }),
-        real("ir_curve.max_range", "farther readings are not trusted, m",
-             [](P& p) -> double& { return p.ir_curve.max_range; }),
-        real("ir_curve.peak_distance", "the output peaks here and folds back closer in, m",
-             [](P& p) -> double& { return p.ir_curve.peak_distance; }),
-        real("ir_curve.contact_adc", "A/D value with the target touching the sensor",
-             [](P& p) -> double& { return p.ir_curve.contact_adc; }),
-        integer("ir_curve.adc_max", "full scale of the A/D converter",
-                [](P& p) -> int& { return p.ir_curve.adc_max; }),
+        text_field("name", "what this robot is called",
+                   [](P& p) -> std::string& { return p.name; }),
+        text_field(
+            "bluetooth_address",
+            "the brick's Bluetooth address, \"00:16:53:XX:XX:XX\"; \"\" = choose when connecting",
+            [](P& p) -> std::string& { return p.bluetooth_address; }),
+        text_field(
+            "relay_program",
+            "program on the brick that relays readings (e.g. \"legofeup.rxe\"); \"\" = direct "
+            "commands only",
+            [](P& p) -> std::string& { return p.relay_program; }),
+        real_field("right_wheel_diameter",
+                   "D_R, effective diameter of the right wheel (wheel 1), m",
+                   [](P& p) -> double& { return p.right_wheel_diameter; }),
+        real_field("left_wheel_diameter", "D_L, effective diameter of the left wheel (wheel 2), m",
+                   [](P& p) -> double& { return p.left_wheel_diameter; }),
+        real_field("wheel_base", "b, effective distance between the wheels' contact points, m",
+                   [](P& p) -> double& { return p.wheel_base; }),
+        real_field(
+            "codo_right",
+            "Codo1, counts per metre of the right wheel; left out = 360/(pi*right_wheel_diameter)",
+            [](P& p) -> double& { return p.codo_right; }),
+        real_field(
+            "codo_left",
+            "Codo2, counts per metre of the left wheel; left out = 360/(pi*left_wheel_diameter)",
+            [](P& p) -> double& { return p.codo_left; }),
+        real_field("power_per_meter_per_second",
+                   "motor power (-100..100) per m/s of wheel speed, regulated motors",
+                   [](P& p) -> double& { return p.power_per_meter_per_second; }),
+        integer_field("right_motor_port", "output port of the right motor: 0 = A, 1 = B, 2 = C",
+                      [](P& p) -> int& { return p.right_motor_port; }),
+        integer_field("left_motor_port", "output port of the left motor: 0 = A, 1 = B, 2 = C",
+                      [](P& p) -> int& { return p.left_motor_port; }),
+        integer_field("front_ir_port",
+                      "input port of the front IR sensor (d_s1): 0 = port 1 ... 3 = 4",
+                      [](P& p) -> int& { return p.front_ir_port; }),
+        integer_field("rear_ir_port",
+                      "input port of the rear IR sensor (d_s2): 0 = port 1 ... 3 = 4",
+                      [](P& p) -> int& { return p.rear_ir_port; }),
+        boolean_field("reversed_motors", "true if positive motor power drives the robot backwards",
+                      [](P& p) -> bool& { return p.reversed_motors; }),
+        real_field("ir_curve.a", "a, unit of the fit: metres per fit unit (0.01: the fit is in cm)",
+                   [](P& p) -> double& { return p.ir_curve.a; }),
+        real_field("ir_curve.c_m", "C_M, constant of multiplication",
+                   [](P& p) -> double& { return p.ir_curve.c_m; }),
+        real_field("ir_curve.c_r", "C_R, constant of linearisation, A/D counts",
+                   [](P& p) -> double& { return p.ir_curve.c_r; }),
+        real_field("ir_curve.b", "b, offset of the fit, fit units",
+                   [](P& p) -> double& { return p.ir_curve.b; }),
+        real_field("ir_curve.min_range", "closer readings are not trusted, m",
+                   [](P& p) -> double& { return p.ir_curve.min_range; }),
+        real_field("ir_curve.max_range", "farther readings are not trusted, m",
+                   [](P& p) -> double& { return p.ir_curve.max_range; }),
+        real_field("ir_curve.peak_distance", "the output peaks here and folds back closer in, m",
+                   [](P& p) -> double& { return p.ir_curve.peak_distance; }),
+        real_field("ir_curve.contact_adc", "A/D value with the target touching the sensor",
+                   [](P& p) -> double& { return p.ir_curve.contact_adc; }),
+        integer_field("ir_curve.adc_max", "full scale of the A/D converter",
+                      [](P& p) -> int& { return p.ir_curve.adc_max; }),
     };
     return fields;
 }
