@@ -17,7 +17,7 @@ using plot::Line;
 namespace colors = plot::colors;
 
 constexpr double kEllipseInterval = 5.0;  // s between the ellipses drawn on the trajectory
-constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNoDistance = std::numeric_limits<double>::quiet_NaN();
 
 template <class Pick>
 std::vector<double> column(const std::vector<RunRecording::Step>& steps, Pick pick) {
@@ -170,7 +170,7 @@ void RunRecording::on_step(const LoopSnapshot& snapshot, const GroundTruth& trut
     step.odometry = snapshot.odometry_pose;
     for (std::size_t i = 0; i < 2; ++i) {
         const IrDistance& reading = snapshot.ir[i].reading;
-        step.ir_distance[i] = reading.in_range() ? reading.distance : kNone;
+        step.ir_distance[i] = reading.in_range() ? reading.distance : kNoDistance;
     }
     step.wheels = snapshot.wheels;
     steps_.push_back(step);

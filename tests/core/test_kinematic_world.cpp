@@ -20,10 +20,10 @@ namespace {
 using testing::KinematicRobot;
 using testing::KinematicRobotParams;
 
-constexpr double kPeriod = 0.05;  // s
-constexpr double kSpeed = 0.1;    // m/s on both wheels
-constexpr int kSteps = 400;       // 2 m straight ahead
-constexpr double kRolledPerStep = kSpeed * kPeriod;
+constexpr double kKinematicPeriod = 0.05;  // s
+constexpr double kSpeed = 0.1;             // m/s on both wheels
+constexpr int kSteps = 400;                // 2 m straight ahead
+constexpr double kRolledPerStep = kSpeed * kKinematicPeriod;
 constexpr double kDistance = kSteps * kRolledPerStep;
 
 /// Dead reckoning from a robot's encoder counts through the core's odometry (eq. 7–9), as the
@@ -68,7 +68,7 @@ StraightDrive drive_straight(double slip_noise, unsigned seed) {
     KinematicRobot robot(Pose2{}, params, seed);
     DeadReckoning odometry(robot, params);
     for (int k = 0; k < kSteps; ++k) {
-        robot.drive(WheelSpeeds{kSpeed, kSpeed}, kPeriod);
+        robot.drive(WheelSpeeds{kSpeed, kSpeed}, kKinematicPeriod);
         odometry.follow(robot);
     }
     return {robot.pose(), odometry.pose(), odometry.metres_per_count()};
@@ -82,10 +82,10 @@ TEST(KinematicWorld, SlipNeverReachesTheEncoders) {
     KinematicRobot with_slip(Pose2{-1.0, -1.0, 0.0}, slipping, 5);
     KinematicRobot without_slip(Pose2{-1.0, -1.0, 0.0}, KinematicRobotParams{}, 5);
     for (int k = 0; k < 600; ++k) {
-        const double t = k * kPeriod;
+        const double t = k * kKinematicPeriod;
         const VelocityCommand command{0.1 + 0.05 * std::sin(0.3 * t), 0.4 * std::cos(0.2 * t)};
-        with_slip.drive(command, kPeriod);
-        without_slip.drive(command, kPeriod);
+        with_slip.drive(command, kKinematicPeriod);
+        without_slip.drive(command, kKinematicPeriod);
         ASSERT_EQ(with_slip.encoder_counts(), without_slip.encoder_counts()) << "step " << k;
     }
     EXPECT_GT(std::hypot(with_slip.pose().x - without_slip.pose().x,

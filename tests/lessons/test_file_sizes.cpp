@@ -31,7 +31,8 @@ using namespace scratch_testing;
 constexpr std::uintmax_t kMiB = 1024 * 1024;
 
 /// What `read` throws for `path`, or "(no error)".
-std::string message_of(const std::function<void(const fs::path&)>& read, const fs::path& path) {
+std::string read_message_of(const std::function<void(const fs::path&)>& read,
+                            const fs::path& path) {
     try {
         read(path);
     } catch (const InputError& error) {
@@ -74,7 +75,7 @@ const std::vector<Reader>& readers() {
 TEST(FileSizes, AFileOneByteAboveItsKindsLimitIsRefusedUnread) {
     for (const Reader& reader : readers()) {
         const fs::path path = sparse_file("too_large", reader.limit + 1);
-        EXPECT_EQ(message_of(reader.read, path),
+        EXPECT_EQ(read_message_of(reader.read, path),
                   path.string() + ": the file is " + std::to_string(reader.limit + 1) + " bytes: "
                       + reader.kind + " files may be at most " + std::to_string(reader.limit / kMiB)
                       + " MiB (" + std::to_string(reader.limit) + " bytes)")
@@ -86,7 +87,7 @@ TEST(FileSizes, AFileOneByteAboveItsKindsLimitIsRefusedUnread) {
 TEST(FileSizes, AFileAtTheLimitIsReadAndParsed) {
     // 16 MiB of zero bytes is no TOML: the parser's error, not the size's.
     const fs::path path = sparse_file("at_limit.toml", 16 * kMiB);
-    const std::string message = message_of(readers().front().read, path);
+    const std::string message = read_message_of(readers().front().read, path);
     EXPECT_EQ(message.find("may be at most"), std::string::npos) << message;
     EXPECT_EQ(message.rfind(path.string() + ":1: ", 0), 0U) << message;
     fs::remove(path);
@@ -94,7 +95,7 @@ TEST(FileSizes, AFileAtTheLimitIsReadAndParsed) {
 
 TEST(FileSizes, AStreamWithoutASizeIsReadUpToTheLimit) {
     // /dev/zero has no size to check first: read up to the limit and one byte more.
-    EXPECT_EQ(message_of(readers().front().read, "/dev/zero"),
+    EXPECT_EQ(read_message_of(readers().front().read, "/dev/zero"),
               "/dev/zero: the file is more than 16777216 bytes: configuration files may be at "
               "most 16 MiB (16777216 bytes)");
 }
@@ -102,7 +103,7 @@ TEST(FileSizes, AStreamWithoutASizeIsReadUpToTheLimit) {
 TEST(FileSizes, ADirectoryIsNamedAsOne) {
     const fs::path dir = temp_dir();
     for (const Reader& reader : readers()) {
-        EXPECT_EQ(message_of(reader.read, dir),
+        EXPECT_EQ(read_message_of(reader.read, dir),
                   dir.string() + ": cannot open the " + reader.kind + " file: it is a directory");
     }
 }
@@ -116,7 +117,7 @@ TEST(FileSizes, AMapImageWhoseHeaderFitsButWhoseFileIsTooLargeIsRefusedUnread) {
                "free_thresh: 0.196\nnegate: 0\n");
     write_file(dir / "map.pgm", "P5\n4000 4000\n255\n");
     fs::resize_file(dir / "map.pgm", 200'000'000);
-    EXPECT_EQ(message_of([](const fs::path& p) { load_map_file(p); }, dir / "map.yaml"),
+    EXPECT_EQ(read_message_of([](const fs::path& p) { load_map_file(p); }, dir / "map.yaml"),
               (dir / "map.pgm").string()
                   + ": the file is 200000000 bytes: map image files may be at most 128 MiB "
                     "(134217728 bytes)");

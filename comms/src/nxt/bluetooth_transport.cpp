@@ -21,8 +21,8 @@ std::string brick_hint(const std::string& address) {
            + ", PIN 1234)?";
 }
 
-[[noreturn]] void connect_failed(const TransportAddress& address, int error,
-                                 std::chrono::milliseconds timeout) {
+[[noreturn]] void bluetooth_connect_failed(const TransportAddress& address, int error,
+                                           std::chrono::milliseconds timeout) {
     const std::string where = address.to_string() + ": ";
     switch (error) {
         case ETIMEDOUT:
@@ -78,7 +78,7 @@ std::unique_ptr<ByteStream> open_bluetooth(const TransportAddress& address,
     const int error = connect_until(fd.get(), reinterpret_cast<const sockaddr*>(&remote),
                                     sizeof remote, deadline);
     if (error != 0) {
-        connect_failed(address, error, timeout);
+        bluetooth_connect_failed(address, error, timeout);
     }
     return stream_from_fd(fd.release(), address.to_string());
 }

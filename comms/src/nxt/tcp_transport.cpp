@@ -34,8 +34,8 @@ AddrInfoList resolve(const TransportAddress& address) {
     return AddrInfoList(list);
 }
 
-[[noreturn]] void connect_failed(const TransportAddress& address, int error,
-                                 std::chrono::milliseconds timeout) {
+[[noreturn]] void tcp_connect_failed(const TransportAddress& address, int error,
+                                     std::chrono::milliseconds timeout) {
     const std::string where = address.to_string() + ": ";
     if (error == ETIMEDOUT) {
         throw LinkError(where + "connect timed out after " + posix::format_duration(timeout)
@@ -74,7 +74,7 @@ std::unique_ptr<ByteStream> open_tcp(const TransportAddress& address,
             break;  // the deadline is spent: no time left for the next address
         }
     }
-    connect_failed(address, error, timeout);
+    tcp_connect_failed(address, error, timeout);
 }
 
 }  // namespace legofeup::comms::nxt::detail
