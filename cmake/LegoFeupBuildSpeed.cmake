@@ -11,9 +11,10 @@
 #   reports a clash as a redefinition), and no file leaves a `using namespace` or a macro for
 #   the next one. Turn it off for quick incremental work on one file:
 #   `cmake --preset dev -DLEGOFEUP_UNITY_BUILD=OFF`. The presets scripts/test.sh builds use
-#   batches of 16 (measured on the 2-core machine, no ccache: dev's GUI tests 303 s -> 198 s,
-#   the asan tree's phase of scripts/test.sh 663 s -> ASAN16 s): Eigen's and GoogleTest's
-#   templates are instantiated once a batch, and fewer batches instantiate them fewer times.
+#   batches of 16 (scripts/test.sh from a clean clone on the 2-core machine, no ccache: the
+#   dev phase 303 s -> 195 s, the asan build 663 s -> 438 s, the whole script ≈ 1370 -> 985 s):
+#   Eigen's and GoogleTest's templates are instantiated once a batch, and fewer batches
+#   instantiate them fewer times.
 #   `release` keeps 8, the size GCC's warnings are checked at in CI.
 # LEGOFEUP_FAST_LINKER (ON): link with lld under clang (the `dev` and `asan` presets) and with
 #   gold under GCC, when the toolchain has them; GNU ld's single-threaded symbol resolution is
