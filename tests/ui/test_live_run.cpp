@@ -234,21 +234,22 @@ TEST(LiveRunOnNxt, AnEmulatedBrickOverTcpRunsTheLoopWithTheLinksQualityAndTruth)
     const LiveRunStatus status = live.status();
     EXPECT_EQ(status.phase, RunPhase::Running);
     EXPECT_NE(status.link.find("tcp:127.0.0.1:"), std::string::npos) << status.link;
-    ASSERT_TRUE((status.robot_health() != nullptr));
-    EXPECT_EQ(status.robot_health()->state, lessons::LinkState::Connected);
-    EXPECT_GT(status.robot_health()->rate_hz(), 5.0);
-    EXPECT_LT(status.robot_health()->rate_hz(),
+    ASSERT_NE(status.robot_health(), nullptr);  // a robot's own health: the brick's
+    ASSERT_TRUE(status.health.has_value());
+    EXPECT_EQ(status.health->state, lessons::LinkState::Connected);
+    EXPECT_GT(status.health->rate_hz(), 5.0);
+    EXPECT_LT(status.health->rate_hz(),
               25.0);  // the latency is felt: not the simulator's pace
-    EXPECT_GE(status.robot_health()->frames, 40U);
-    ASSERT_TRUE(status.robot_health()->battery_millivolts.has_value());
-    EXPECT_EQ(*status.robot_health()->battery_millivolts, 7800);  // the emulated firmware's default
+    EXPECT_GE(status.health->frames, 40U);
+    ASSERT_TRUE(status.health->battery_millivolts.has_value());
+    EXPECT_EQ(*status.health->battery_millivolts, 7800);  // the emulated firmware's default
     // A brick: its own health, truth only through the emulator's simulator, nothing else.
     EXPECT_TRUE(status.capabilities.robot_health);
     EXPECT_TRUE(status.capabilities.ground_truth);
     EXPECT_FALSE(status.capabilities.teleport);
     EXPECT_FALSE(status.capabilities.live_noise);
     EXPECT_FALSE(status.capabilities.stops_clock);
-    EXPECT_NE(status.link.find(status.robot_health()->address), std::string::npos);
+    EXPECT_NE(status.link.find(status.health->address), std::string::npos);
     const RunSample& last = samples.back();
     ASSERT_TRUE(last.truth.has_value());  // the emulator's simulator tells the truth
     EXPECT_TRUE(std::isfinite(last.nees));
@@ -276,8 +277,9 @@ TEST(LiveRunOnNxt, ABrickThatGoesAwayFailsTheRunNamingTheLinkAndANewRunReconnect
         const LiveRunStatus status = wait_for_end(live, 10s);
         EXPECT_EQ(status.phase, RunPhase::Failed);
         EXPECT_NE(status.message.find(address), std::string::npos) << status.message;
-        ASSERT_TRUE((status.robot_health() != nullptr));
-        EXPECT_EQ(status.robot_health()->state, lessons::LinkState::Failed);
+        ASSERT_NE(status.robot_health(), nullptr);
+        ASSERT_TRUE(status.health.has_value());
+        EXPECT_EQ(status.health->state, lessons::LinkState::Failed);
     }
     // Reconnecting: a new run on a new brick, in the same process, works.
     emulated = std::make_unique<EmulatedBrick>("f");
@@ -286,7 +288,7 @@ TEST(LiveRunOnNxt, ABrickThatGoesAwayFailsTheRunNamingTheLinkAndANewRunReconnect
     collect_until(again, samples, [](const auto& s) { return s.size() >= 10; });
     ASSERT_GE(samples.size(), 10U) << again.status().message;
     EXPECT_EQ(again.status().phase, RunPhase::Running);
-    EXPECT_EQ(again.status().robot_health()->state, lessons::LinkState::Connected);
+    EXPECT_EQ(again.status().health->state, lessons::LinkState::Connected);
 }
 
 TEST(LiveRunOnNxt, AConnectionThatCannotBeMadeFailsWithItsReason) {

@@ -92,7 +92,8 @@ class NxtWindowTest : public QObject {
         QVERIFY2(statusBarRobotLine()->text().startsWith(QStringLiteral("NXT: Connected · 7.80 V")),
                  qPrintable(statusBarRobotLine()->text()));
         QVERIFY(session_->robotHealth() != nullptr);
-        QVERIFY(session_->robotHealth()->rate_hz() > 5.0);
+        QVERIFY(session_->status().health.has_value());
+        QVERIFY(session_->status().health->rate_hz() > 5.0);
 
         window_->runToolBar().stopAction()->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(session_->phase(), RunPhase::Stopped, kPatienceMs);
