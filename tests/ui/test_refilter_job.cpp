@@ -3,7 +3,6 @@
 // that does not resolve finishes with resolve()'s message, not a throw on the GUI thread.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
@@ -11,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "../lessons/scratch_dir_test_support.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
@@ -23,9 +23,7 @@ namespace {
 
 /// A one-lap run of experiment f, recorded and read back.
 std::shared_ptr<const lessons::RunLog> recorded_lap() {
-    const std::filesystem::path path =
-        std::filesystem::temp_directory_path()
-        / ("legofeup-refilter-job-" + std::to_string(::getpid()) + ".log");
+    const std::filesystem::path path = lessons::scratch_testing::temp_dir() / "lap.log";
     lessons::RunConfig config = lessons::find_experiment("f")->config;
     config.laps = 1;
     const lessons::ResolvedRun run = lessons::resolve(config);
@@ -34,9 +32,7 @@ std::shared_ptr<const lessons::RunLog> recorded_lap() {
         lessons::run_lockstep(run, &writer);
         writer.close();
     }
-    auto log = std::make_shared<const lessons::RunLog>(lessons::load_run_log(path));
-    std::filesystem::remove(path);
-    return log;
+    return std::make_shared<const lessons::RunLog>(lessons::load_run_log(path));
 }
 
 RefilterJob::Outcome wait_for(RefilterJob& job) {

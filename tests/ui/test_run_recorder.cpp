@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "../lessons/scratch_dir_test_support.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
@@ -27,26 +28,6 @@ using namespace legofeup::ui;
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A folder of its own under the system's temporary one, removed afterwards.
-class Scratch {
-  public:
-    Scratch() : path_(fs::temp_directory_path() / ("legofeup-recorder-" + unique_name())) {
-        fs::create_directories(path_);
-    }
-    ~Scratch() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    fs::path operator/(const std::string& name) const { return path_ / name; }
-
-  private:
-    static std::string unique_name() {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        return std::string(test->name()) + "-" + std::to_string(::getpid());
-    }
-    fs::path path_;
-};
 
 std::string read_all(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -102,7 +83,7 @@ std::vector<RunRecorder::Problem> record_lap(const fs::path& trace, const fs::pa
 }  // namespace
 
 TEST(RunRecorder, WritesTheCliTraceAndACompleteRunLog) {
-    const Scratch scratch;
+    const fs::path scratch = lessons::scratch_testing::temp_dir();
     ASSERT_GT(lap().samples.size(), 1000U);
     RunRecorder recorder({scratch / "trace.csv", scratch / "run.log", "one lap", {}}, lap().run);
     append_lap(recorder);
@@ -126,7 +107,7 @@ TEST(RunRecorder, WritesTheCliTraceAndACompleteRunLog) {
 // thread, this test would never get to open the reader and would hang until ctest's
 // timeout); once a reader comes, everything appended arrives, in order.
 TEST(RunRecorder, TheCallerNeverWaitsForTheDisk) {
-    const Scratch scratch;
+    const fs::path scratch = lessons::scratch_testing::temp_dir();
     const fs::path fifo = scratch / "trace.csv";
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
     RunRecorder recorder({fifo, {}, "one lap", {}}, lap().run);  // the trace alone
@@ -141,7 +122,7 @@ TEST(RunRecorder, TheCallerNeverWaitsForTheDisk) {
 }
 
 TEST(RunRecorder, FilesThatCannotBeCreatedAreProblemsAndTheOtherFileGoesOn) {
-    const Scratch scratch;
+    const fs::path scratch = lessons::scratch_testing::temp_dir();
     using Kind = RunRecorder::Problem::Kind;
     const fs::path lost_trace = scratch / "no-such-folder" / "trace.csv";
     auto problems = record_lap(lost_trace, scratch / "run.log");
@@ -159,7 +140,7 @@ TEST(RunRecorder, FilesThatCannotBeCreatedAreProblemsAndTheOtherFileGoesOn) {
 
 // /dev/full accepts the open and fails every write: the trace stops, said once.
 TEST(RunRecorder, AFullDiskStopsTheTraceOnceAndTheRunLogGoesOn) {
-    const Scratch scratch;
+    const fs::path scratch = lessons::scratch_testing::temp_dir();
     const auto problems = record_lap("/dev/full", scratch / "run.log");
     ASSERT_EQ(problems.size(), 1U);
     EXPECT_EQ(problems[0].kind, RunRecorder::Problem::Kind::TraceStopped);
