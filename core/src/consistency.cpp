@@ -1,15 +1,15 @@
 #include "legofeup/core/consistency.hpp"
 
-#include <Eigen/Cholesky>
 #include <limits>
+
+#include "legofeup/core/small_ldlt.hpp"
 
 namespace legofeup {
 
 double normalized_estimation_error(const PoseError& error, const StateCovariance& covariance) {
     const StateVector x_tilde = error.vector();  // x̃ = x̂ − x
-    const Eigen::LDLT<StateCovariance> ldlt(covariance);
-    if (!x_tilde.allFinite() || !covariance.allFinite() || ldlt.info() != Eigen::Success
-        || !(ldlt.vectorD().array() > 0.0).all()) {
+    SmallLdlt<kStateSize> ldlt;
+    if (!x_tilde.allFinite() || !covariance.allFinite() || !ldlt.factorise(covariance)) {
         return std::numeric_limits<double>::quiet_NaN();
     }
     return x_tilde.dot(ldlt.solve(x_tilde));  // x̃ᵀ P⁻¹ x̃, solved, never inverted

@@ -4,9 +4,10 @@
 
 namespace legofeup {
 
-IrBeam ir_beam(const Pose2& pose, const IrMount& mount, int sensor) {
-    const double c = std::cos(pose.theta);
-    const double s = std::sin(pose.theta);
+namespace {
+
+/// The beam of `sensor` from the heading's cosine c and sine s.
+IrBeam beam_from_heading(const Pose2& pose, double c, double s, const IrMount& mount, int sensor) {
     const Vector2 forward(c, s);
     const Vector2 right(s, -c);  // the robot's −y axis: where the sensors look
     IrBeam beam;
@@ -14,6 +15,19 @@ IrBeam ir_beam(const Pose2& pose, const IrMount& mount, int sensor) {
         position_of(pose) + mount.longitudinal(sensor) * forward + mount.lateral_offset * right;
     beam.direction = right;
     return beam;
+}
+
+}  // namespace
+
+IrBeam ir_beam(const Pose2& pose, const IrMount& mount, int sensor) {
+    return beam_from_heading(pose, std::cos(pose.theta), std::sin(pose.theta), mount, sensor);
+}
+
+std::array<IrBeam, kIrSensorCount> ir_beams(const Pose2& pose, const IrMount& mount) {
+    const double c = std::cos(pose.theta);
+    const double s = std::sin(pose.theta);
+    return {beam_from_heading(pose, c, s, mount, kFrontSensor),
+            beam_from_heading(pose, c, s, mount, kRearSensor)};
 }
 
 BeamHit cast_beam(const IrBeam& beam, const WallLine& wall, double segment_margin) {

@@ -1,17 +1,17 @@
 #include "legofeup/core/wall_association.hpp"
 
-#include <Eigen/Cholesky>
 #include <cmath>
 #include <limits>
 
 #include "legofeup/core/chi_square.hpp"
+#include "legofeup/core/small_ldlt.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
 namespace legofeup {
 namespace {
 
 // d² = νᵀS⁻¹ν of `measurement` against the belief: ν = z − ∇h_X X̂ (θ wrapped),
-// S = ∇h_X P ∇h_Xᵀ + ∇h_r R ∇h_rᵀ, solved with LDLT (never an inverse). The model is linear,
+// S = ∇h_X P ∇h_Xᵀ + ∇h_r R ∇h_rᵀ, solved with LDLᵀ (never an inverse). The model is linear,
 // so this is the NIS the EKF's update (and the UKF's, whose sigma points reproduce a linear
 // h exactly) computes for the same wall. Infinite when S is not positive definite.
 double mahalanobis_distance_squared(const PoseBelief& belief, const WallMeasurement& measurement) {
@@ -21,8 +21,8 @@ double mahalanobis_distance_squared(const PoseBelief& belief, const WallMeasurem
     const WallMeasurement::Jacobian& H = measurement.jacobian(x);
     const Eigen::Matrix2d S =
         H * belief.covariance * H.transpose() + measurement.noise_covariance();
-    const Eigen::LDLT<Eigen::Matrix2d> ldlt(S);
-    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0.0).all()) {
+    SmallLdlt<2> ldlt;
+    if (!ldlt.factorise(S)) {
         return std::numeric_limits<double>::infinity();
     }
     const double d2 = innovation.dot(ldlt.solve(innovation));
@@ -91,8 +91,7 @@ AssociationResult associate_wall(const PoseBelief& belief, const WallObservation
     result.outcome = AssociationOutcome::NoWallInView;
     result.gate = params.gate;
 
-    const IrBeam front = ir_beam(estimate, mount, kFrontSensor);
-    const IrBeam rear = ir_beam(estimate, mount, kRearSensor);
+    const auto [front, rear] = ir_beams(estimate, mount);
     const double longest = ir_max_range + params.range_margin;
 
     // 1. The nearest wall that both predicted beams hit, as the real beams would.

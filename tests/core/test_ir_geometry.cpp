@@ -24,6 +24,20 @@ TEST(IrGeometry, BeamsStartAtTheMountsAndLookRight) {
     EXPECT_NEAR(front.direction.y(), 0.0, 1e-12);
 }
 
+TEST(IrGeometry, BothBeamsAtOnceAreEachBeamsOwnBits) {
+    const IrMount mount{0.07, -0.04, 0.055};
+    for (const double theta : {-3.0, -1.2, 0.0, 0.3, kPi / 2.0, 2.9}) {
+        const Pose2 pose{0.31, -0.77, theta};
+        const auto beams = ir_beams(pose, mount);
+        for (const int sensor : {kFrontSensor, kRearSensor}) {
+            const IrBeam one = ir_beam(pose, mount, sensor);
+            const IrBeam& both = beams[static_cast<std::size_t>(sensor)];
+            EXPECT_EQ(both.origin, one.origin) << theta << " sensor " << sensor;
+            EXPECT_EQ(both.direction, one.direction) << theta << " sensor " << sensor;
+        }
+    }
+}
+
 TEST(IrGeometry, CastBeamHitsMissesAndHonoursTheMargin) {
     const WallLine wall = make_wall_line({"w", {0.0, -1.0}, {1.0, -1.0}});
     IrBeam beam{{0.5, -0.8}, {0.0, -1.0}};

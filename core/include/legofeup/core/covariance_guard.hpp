@@ -19,6 +19,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "legofeup/core/small_ldlt.hpp"
+
 namespace legofeup {
 
 struct CovarianceLimits {
@@ -38,30 +40,10 @@ enum CovarianceRepair : std::uint8_t {
 };
 
 /// True if the symmetric matrix P is positive definite: every pivot of its LDLᵀ
-/// factorisation (Cholesky without square roots) is positive. Written out for small fixed
-/// sizes because Eigen's general LLT costs more than the whole filter step here.
+/// factorisation (Cholesky without square roots, small_ldlt.hpp) is positive.
 template <int N>
 bool is_positive_definite(const Eigen::Matrix<double, N, N>& P) {
-    Eigen::Matrix<double, N, N> L = Eigen::Matrix<double, N, N>::Zero();
-    Eigen::Matrix<double, N, 1> d;
-    for (int j = 0; j < N; ++j) {
-        double pivot = P(j, j);
-        for (int k = 0; k < j; ++k) {
-            pivot -= L(j, k) * L(j, k) * d(k);
-        }
-        if (!(pivot > 0.0)) {
-            return false;  // also catches NaN
-        }
-        d(j) = pivot;
-        for (int i = j + 1; i < N; ++i) {
-            double value = P(i, j);
-            for (int k = 0; k < j; ++k) {
-                value -= L(i, k) * L(j, k) * d(k);
-            }
-            L(i, j) = value / pivot;
-        }
-    }
-    return true;
+    return SmallLdlt<N>().factorise(P);
 }
 
 /// Smallest eigenvalue, relative to trace(P), that the guard accepts without projecting.

@@ -25,11 +25,11 @@
 // optimal gain and stays positive semi-definite for any gain; the base then symmetrises
 // and floors P. Non-finite inputs or results leave x and P unchanged.
 
-#include <Eigen/Cholesky>
 #include <concepts>
 #include <limits>
 
 #include "legofeup/core/filter_base.hpp"
+#include "legofeup/core/small_ldlt.hpp"
 
 namespace legofeup {
 
@@ -75,14 +75,13 @@ struct UpdateReport {
 
 /// The part of an update the EKF and the UKF share once they have ν and S (in `report`) and
 /// the cross-covariance C between state and measurement (P·∇h_Xᵀ for the EKF, P_xz for the
-/// UKF): factorise S with LDLT, compute the NIS, apply the gate and the gain W = C·S⁻¹.
-/// Returns false, with report.status saying why, when the update must not go on.
+/// UKF): factorise S with LDLᵀ (small_ldlt.hpp), compute the NIS, apply the gate and the gain W =
+/// C·S⁻¹. Returns false, with report.status saying why, when the update must not go on.
 template <int M, int N>
 bool solve_gain(UpdateReport<M, N>& report, const Eigen::Matrix<double, N, M>& cross,
                 const MahalanobisGate& gate) {
-    using MeasurementMatrix = Eigen::Matrix<double, M, M>;
-    const Eigen::LDLT<MeasurementMatrix> ldlt(report.innovation_covariance);
-    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0.0).all()) {
+    SmallLdlt<M> ldlt;
+    if (!ldlt.factorise(report.innovation_covariance)) {
         report.status = StepStatus::RejectedSingular;
         return false;
     }
@@ -91,9 +90,7 @@ bool solve_gain(UpdateReport<M, N>& report, const Eigen::Matrix<double, N, M>& c
         report.status = StepStatus::RejectedByGate;
         return false;
     }
-    // W = C·S⁻¹: each row of W is (S⁻¹·row of C)ᵀ since S is symmetric. Solved one row at a
-    // time: Eigen sends a matrix right-hand side through its blocked GEMM path, which for
-    // these sizes costs more than the rest of the update.
+    // W = C·S⁻¹: each row of W is (S⁻¹·row of C)ᵀ since S is symmetric.
     for (int row = 0; row < N; ++row) {
         report.gain.row(row) = ldlt.solve(cross.row(row).transpose()).transpose();
     }

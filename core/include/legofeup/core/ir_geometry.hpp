@@ -37,6 +37,9 @@ struct IrBeam {
 };
 
 IrBeam ir_beam(const Pose2& pose, const IrMount& mount, int sensor);
+/// Both sensors' beams, indexed by IrSensor: the same bits as ir_beam for each, with one
+/// cosine and sine of the heading between them (the wall association's hot path).
+std::array<IrBeam, kIrSensorCount> ir_beams(const Pose2& pose, const IrMount& mount);
 
 /// Where a beam meets a wall's line.
 struct BeamHit {
