@@ -434,6 +434,46 @@ class LessonPanelTest : public QObject {
         QCOMPARE(panel().exportReport(blocked).isEmpty(), false);
     }
 
+    void theFileMenusExportWritesOnAWorkerAndSaysWhenItIsDone() {
+        type(window_->findChild<QLineEdit*>(QStringLiteral("studentNames")),
+             QStringLiteral("Rui Costa"));
+        runShortStep(QStringLiteral("b"));
+        auto* actions = window_->findChild<LessonActions*>();
+        QVERIFY(actions != nullptr);
+        QTemporaryDir out;
+        QSignalSpy exported(actions, &LessonActions::reportExported);
+        QSignalSpy notes(actions, &LessonActions::done);
+        QVERIFY(actions->exportReportTo(out.path()));
+        // The call returned at once: the worker writes, the window answers meanwhile.
+        QVERIFY(exported.isEmpty());
+        QVERIFY(actions->exporting());
+        QVERIFY(!actions->exportReportTo(out.path()));  // one report at a time
+        QVERIFY(exported.wait(60000));
+        QCOMPARE(exported.takeFirst().at(0).toString(), QString());
+        QVERIFY(!actions->exporting());
+        QVERIFY(notes.last().at(0).toString().contains(QStringLiteral("Wrote report.html")));
+        QVERIFY(read_file(out.filePath(QStringLiteral("report.html"))).contains("Rui Costa"));
+        QVERIFY(read_file(out.filePath(QStringLiteral("report.pdf"))).startsWith("%PDF"));
+
+        // A folder that cannot be made: the warning names it, nothing is left half-written.
+        const QString blocked = out.filePath(QStringLiteral("report.html/inside"));
+        QString warning;
+        testing::answer_modals([&warning](QWidget& modal) {
+            auto* box = qobject_cast<QMessageBox*>(&modal);
+            if (box == nullptr) {
+                return false;
+            }
+            warning = box->informativeText();
+            box->accept();
+            return true;
+        });
+        QVERIFY(actions->exportReportTo(blocked));
+        QVERIFY(exported.wait(60000));
+        QVERIFY(!exported.takeFirst().at(0).toString().isEmpty());
+        QTRY_VERIFY(!warning.isEmpty());
+        QVERIFY2(warning.contains(QStringLiteral("inside")), qPrintable(warning));
+    }
+
     void aTeachersLessonOpensAndABrokenOneIsRefusedWithItsLine() {
         QTemporaryDir out;
         const QString good = out.filePath(QStringLiteral("teacher.toml"));

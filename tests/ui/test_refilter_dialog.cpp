@@ -9,6 +9,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QSignalSpy>
 #include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -59,6 +60,23 @@ double largest_gap(const QCPCurve& a, const QCPCurve& b) {
     return gap;
 }
 
+/// Opens `path` in the dialog and waits until it is read (on its RunLogReadJob's thread):
+/// "" or the problem. The dialog answers while it reads (the GUI thread reads nothing).
+QString open_log(RefilterDialog& dialog, const QString& path) {
+    QSignalSpy opened(&dialog, &RefilterDialog::logOpened);
+    dialog.openLog(path);
+    if (!opened.isEmpty()) {
+        return QStringLiteral("openLog read the log on the GUI thread");
+    }
+    if (!dialog.busy()) {
+        return QStringLiteral("openLog started no reading");
+    }
+    if (!opened.wait(kPatienceMs)) {
+        return QStringLiteral("the log was not read within the patience");
+    }
+    return opened.takeFirst().at(0).toString();
+}
+
 /// Waits for the dialog's replay (on its RefilterJob's thread) to be shown.
 bool refiltered(RefilterDialog& dialog) {
     return QTest::qWaitFor([&] { return !dialog.busy(); }, kPatienceMs);
@@ -101,7 +119,7 @@ class RefilterDialogTest : public QObject {
         dialog.resize(1400, 900);
         dialog.show();
         QVERIFY(QTest::qWaitForWindowExposed(&dialog));
-        QCOMPARE(dialog.openLog(log_path_), QString());
+        QCOMPARE(open_log(dialog, log_path_), QString());
         const lessons::RunLog log = lessons::load_run_log(log_path_.toStdString());
         // Prefilled from the log's configuration, in the configuration panel's editors.
         QCOMPARE(dialog.findChild<QLineEdit*>(QStringLiteral("filter.q11"))->text(),
@@ -171,7 +189,7 @@ class RefilterDialogTest : public QObject {
 
     void aBrokenLogIsRefusedWithItsLineAndTheLogShownStays() {
         RefilterDialog dialog(*session_);
-        QCOMPARE(dialog.openLog(log_path_), QString());
+        QCOMPARE(open_log(dialog, log_path_), QString());
         // The header as recorded, then a record line cut to nonsense.
         QFile good(log_path_);
         QVERIFY(good.open(QIODevice::ReadOnly));
@@ -188,7 +206,7 @@ class RefilterDialogTest : public QObject {
         file.write(lines.mid(0, first_record + 1).join('\n'));
         file.write("\n");
         file.close();
-        const QString error = dialog.openLog(bad);
+        const QString error = open_log(dialog, bad);
         QVERIFY2(error.contains(QStringLiteral("bad.log:%1").arg(first_record + 1)),
                  qPrintable(error));
         QCOMPARE(dialog.findChild<QLineEdit*>(QStringLiteral("refilterLogPath"))->text(),
@@ -218,7 +236,7 @@ class RefilterDialogTest : public QObject {
         QVERIFY(live.metrics.updates_applied > 0);
 
         RefilterDialog dialog(*session_);
-        QCOMPARE(dialog.openLog(path), QString());
+        QCOMPARE(open_log(dialog, path), QString());
         QCOMPARE(dialog.refilterNow(), QString());
         QVERIFY(refiltered(dialog));
         const QTableWidget& table = dialog.metricsTable();
@@ -260,7 +278,7 @@ class RefilterDialogTest : public QObject {
         QCOMPARE(log.records.back().estimate, session.history().latest().snapshot.estimate);
 
         RefilterDialog* dialog = window.openRefilter();
-        QCOMPARE(dialog->openLog(session.recordingFile()), QString());
+        QCOMPARE(open_log(*dialog, session.recordingFile()), QString());
         QCOMPARE(dialog->refilterNow(), QString());
         QVERIFY(refiltered(*dialog));
         QVERIFY(dialog->result()->reproduces_recording());

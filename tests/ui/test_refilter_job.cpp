@@ -1,12 +1,15 @@
-// The Re-filter dialog's worker: lessons::refilter on a thread of its own, its progress and
-// its outcome through a mailbox. Its result is the library's, bit for bit; a configuration
-// that does not resolve finishes with resolve()'s message, not a throw on the GUI thread.
+// The Re-filter dialog's workers: lessons::refilter and the reading of a run log, each on a
+// thread of its own (BackgroundTask), their progress and outcome through a mailbox. Its result is
+// the library's, bit for bit; a configuration that does not resolve finishes with resolve()'s
+// message, not a throw on the GUI thread.
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -21,9 +24,8 @@ using namespace legofeup::ui;
 
 namespace {
 
-/// A one-lap run of experiment f, recorded and read back.
-std::shared_ptr<const lessons::RunLog> recorded_lap() {
-    const std::filesystem::path path = lessons::scratch_testing::temp_dir() / "lap.log";
+/// A one-lap run of experiment f, recorded into `path`.
+std::filesystem::path record_lap(const std::filesystem::path& path) {
     lessons::RunConfig config = lessons::find_experiment("f")->config;
     config.laps = 1;
     const lessons::ResolvedRun run = lessons::resolve(config);
@@ -32,17 +34,24 @@ std::shared_ptr<const lessons::RunLog> recorded_lap() {
         lessons::run_lockstep(run, &writer);
         writer.close();
     }
-    return std::make_shared<const lessons::RunLog>(lessons::load_run_log(path));
+    return path;
 }
 
-RefilterJob::Outcome wait_for(RefilterJob& job) {
+/// The same, read back.
+std::shared_ptr<const lessons::RunLog> recorded_lap() {
+    return std::make_shared<const lessons::RunLog>(
+        lessons::load_run_log(record_lap(lessons::scratch_testing::temp_dir() / "lap.log")));
+}
+
+template <class Job>
+typename Job::Outcome wait_for(Job& job) {
     while (!job.finished()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    std::optional<RefilterJob::Outcome> outcome = job.take();
+    std::optional<typename Job::Outcome> outcome = job.take();
     EXPECT_TRUE(outcome.has_value());
     EXPECT_FALSE(job.take().has_value());  // taken once
-    return outcome.value_or(RefilterJob::Outcome{});
+    return outcome.value_or(typename Job::Outcome{});
 }
 
 }  // namespace
@@ -75,4 +84,56 @@ TEST(RefilterJob, AConfigurationThatDoesNotResolveFinishesWithItsMessage) {
     const RefilterJob::Outcome outcome = wait_for(job);
     EXPECT_FALSE(outcome.result.has_value());
     EXPECT_NE(outcome.error.find("r11"), std::string::npos) << outcome.error;
+}
+
+TEST(RunLogReadJob, ReadsTheLogAndItsWorldsWalls) {
+    const std::filesystem::path path =
+        record_lap(lessons::scratch_testing::temp_dir() / "read.log");
+    RunLogReadJob job(path.string());
+    const RunLogReadJob::Outcome outcome = wait_for(job);
+    ASSERT_TRUE(outcome.result.has_value()) << outcome.error;
+    const lessons::RunLog direct = lessons::load_run_log(path);
+    ASSERT_NE(outcome.result->log, nullptr);
+    EXPECT_EQ(outcome.result->log->records.size(), direct.records.size());
+    EXPECT_GT(direct.records.size(), 100u);
+    EXPECT_EQ(outcome.result->walls.size(), lessons::resolve(direct.config).world.walls.size());
+    EXPECT_EQ(outcome.result->walls.size(), 4u);  // the arena's four walls
+    EXPECT_EQ(job.progress(), 1.0);
+}
+
+TEST(RunLogReadJob, AFileThatDoesNotReadFinishesWithItsMessage) {
+    const std::filesystem::path path = lessons::scratch_testing::temp_dir() / "missing.log";
+    std::filesystem::remove(path);
+    RunLogReadJob job(path.string());
+    const RunLogReadJob::Outcome outcome = wait_for(job);
+    EXPECT_FALSE(outcome.result.has_value());
+    EXPECT_NE(outcome.error.find("missing.log"), std::string::npos) << outcome.error;
+}
+
+TEST(BackgroundTask, CancellingStopsTheWorkAtItsNextReport) {
+    std::atomic<int> reports{0};
+    {
+        BackgroundTask<int> task([&reports](const TaskProgress& progress) {
+            for (int i = 0;; ++i) {
+                ++reports;
+                if (!progress.report(0.5)) {
+                    throw std::runtime_error("stopped after " + std::to_string(i + 1));
+                }
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            }
+            return 0;
+        });
+        while (reports.load() < 3) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        EXPECT_FALSE(task.finished());
+        EXPECT_EQ(task.progress(), 0.5);
+        task.cancel();
+        const auto outcome = wait_for(task);
+        EXPECT_FALSE(outcome.result.has_value());
+        EXPECT_EQ(outcome.error.rfind("stopped after ", 0), 0u) << outcome.error;
+    }
+    const int after_cancel = reports.load();
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_EQ(reports.load(), after_cancel);  // joined: the work runs no more
 }

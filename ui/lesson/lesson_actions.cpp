@@ -1,12 +1,15 @@
 #include "legofeup/ui/lesson/lesson_actions.hpp"
 
-#include <QApplication>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QStandardPaths>
+#include <QThread>
+#include <QTimer>
+#include <filesystem>
 
+#include "legofeup/report/student_report.hpp"
 #include "legofeup/ui/lesson/lesson_panel.hpp"
 #include "legofeup/ui/lesson/lesson_progress.hpp"
 #include "legofeup/ui/window/app_settings.hpp"
@@ -19,7 +22,19 @@ const QString kTomlFilter = QObject::tr("TOML files (*.toml);;All files (*)");
 }  // namespace
 
 LessonActions::LessonActions(LessonPanel& panel, QWidget* dialog_parent)
-    : QObject(dialog_parent), panel_(panel), dialog_parent_(dialog_parent) {}
+    : QObject(dialog_parent), panel_(panel), dialog_parent_(dialog_parent) {
+    export_poll_ = new QTimer(this);
+    export_poll_->setInterval(30);
+    connect(export_poll_, &QTimer::timeout, this, &LessonActions::pollExport);
+}
+
+LessonActions::~LessonActions() {
+    if (export_job_) {
+        while (!export_job_->finished()) {  // writing cannot be cut short without a torn file
+            QThread::msleep(5);
+        }
+    }
+}
 
 QString LessonActions::folder() const {
     // The folder used last, else Documents, else home (a fresh account may have no Documents).
@@ -96,14 +111,40 @@ void LessonActions::exportReport() {
         return;
     }
     remember(directory);
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    const QString error = panel_.exportReport(directory);
-    QApplication::restoreOverrideCursor();
-    if (!error.isEmpty()) {
-        warn(tr("The report was not exported"), error);
+    exportReportTo(directory);
+}
+
+bool LessonActions::exportReportTo(const QString& directory) {
+    if (export_job_) {
+        return false;
+    }
+    export_directory_ = directory;
+    export_job_ = std::make_unique<BackgroundTask<bool>>(
+        [report = panel_.reportNow(),
+         path = std::filesystem::path(directory.toStdString())](const TaskProgress&) {
+            report::write_report(report, path);
+            return true;
+        });
+    emit done(tr("Writing the report into %1…").arg(directory));
+    export_poll_->start();
+    return true;
+}
+
+void LessonActions::pollExport() {
+    if (!export_job_ || !export_job_->finished()) {
         return;
     }
-    emit done(tr("Wrote report.html and report.pdf into %1").arg(directory));
+    export_poll_->stop();
+    const std::optional<BackgroundTask<bool>::Outcome> outcome = export_job_->take();
+    export_job_.reset();
+    const QString problem =
+        outcome && outcome->result ? QString() : QString::fromStdString(outcome->error);
+    emit reportExported(problem);
+    if (!problem.isEmpty()) {
+        warn(tr("The report was not exported"), problem);
+        return;
+    }
+    emit done(tr("Wrote report.html and report.pdf into %1").arg(export_directory_));
 }
 
 }  // namespace legofeup::ui

@@ -434,11 +434,15 @@ QString LessonPanel::openAnswers(const QString& path) {
     return {};
 }
 
-QString LessonPanel::exportReport(const QString& directory) const {
+report::StudentReport LessonPanel::reportNow() const {
     const QString created =
         QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"));
+    return progress_->report(created.toStdString());
+}
+
+QString LessonPanel::exportReport(const QString& directory) const {
     try {
-        report::write_report(progress_->report(created.toStdString()), directory.toStdString());
+        report::write_report(reportNow(), directory.toStdString());
     } catch (const std::exception& error) {
         return QString::fromUtf8(error.what());
     }

@@ -35,14 +35,6 @@ namespace {
 // The settings a student changes to ask "what if": the process and the measurement noise.
 constexpr std::array kTunedKeys = {"filter.q11", "filter.q22", "filter.r11", "filter.r22"};
 
-std::vector<Wall> walls_of(const lessons::RunConfig& config) {
-    try {
-        return lessons::resolve(config).world.walls;
-    } catch (const std::exception&) {
-        return {};  // a world file that moved: the overlay goes without walls
-    }
-}
-
 }  // namespace
 
 RefilterDialog::RefilterDialog(const Session& session, QWidget* parent) : QDialog(parent) {
@@ -169,23 +161,47 @@ void RefilterDialog::chooseLog() {
         return;
     }
     folder_ = QFileInfo(path).absolutePath();
-    if (const QString error = openLog(path); !error.isEmpty()) {
-        QMessageBox box(QMessageBox::Warning, tr("The run log was not read"),
-                        tr("The run log was not read"), QMessageBox::Ok, this);
-        box.setObjectName(QStringLiteral("refilterProblem"));
-        box.setInformativeText(error);
-        box.exec();
-    }
+    // A log that does not read is worth a box: the user asked for it just now.
+    connect(
+        this, &RefilterDialog::logOpened, this,
+        [this](const QString& problem) {
+            if (problem.isEmpty()) {
+                return;
+            }
+            QMessageBox box(QMessageBox::Warning, tr("The run log was not read"),
+                            tr("The run log was not read"), QMessageBox::Ok, this);
+            box.setObjectName(QStringLiteral("refilterProblem"));
+            box.setInformativeText(problem);
+            box.exec();
+        },
+        Qt::SingleShotConnection);
+    openLog(path);
 }
 
-QString RefilterDialog::openLog(const QString& path) {
-    lessons::RunLog log;
-    try {
-        log = lessons::load_run_log(path.toStdString());
-    } catch (const std::exception& error) {  // InputError: file:line and the reason
-        return QString::fromUtf8(error.what());
+void RefilterDialog::openLog(const QString& path) {
+    job_.reset();  // a replay of the log being replaced: cancelled and joined
+    read_job_ = std::make_unique<RunLogReadJob>(path.toStdString());
+    reading_path_ = path;
+    showMessage(tr("Reading %1…").arg(path), false);
+    progress_->setRange(0, 0);  // reading has no progress to show: a busy bar
+    progress_->setVisible(true);
+    poll_->start();
+}
+
+void RefilterDialog::finishReading() {
+    std::optional<RunLogReadJob::Outcome> outcome = read_job_->take();
+    read_job_.reset();
+    progress_->setRange(0, 100);
+    progress_->setVisible(false);
+    if (!outcome->result) {  // InputError: file:line and the reason
+        const QString problem = QString::fromStdString(outcome->error);
+        poll_->stop();
+        showMessage(tr("The run log was not read: %1").arg(problem), true);
+        emit logOpened(problem);
+        return;
     }
-    path_->setText(path);
+    const lessons::RunLog& log = *outcome->result->log;
+    path_->setText(reading_path_);
     QStringList about_parts = {
         QString::fromStdString(log.header.title), tr("seed %1").arg(log.header.seed),
         tr("%1 steps").arg(log.records.size()), QString::fromStdString(log.header.link),
@@ -196,8 +212,8 @@ QString RefilterDialog::openLog(const QString& path) {
         about += QStringLiteral("\n") + QString::fromStdString(note);
     }
     about_->setText(about);
-    walls_ = walls_of(log.config);  // the world file is read once, here, not per replay
-    log_ = std::make_shared<const lessons::RunLog>(std::move(log));
+    walls_ = std::move(outcome->result->walls);
+    log_ = std::move(outcome->result->log);
     result_.reset();
     plots_->clear();
     show_refilter_metrics(*metrics_, std::nullopt, std::nullopt);
@@ -210,7 +226,7 @@ QString RefilterDialog::openLog(const QString& path) {
     // The recorded run at once (both replays the same), ready for the first "what if".
     startRefilter({}, tr("The recorded run. Change Q or R and press Enter: it is re-filtered "
                          "at once."));
-    return {};
+    emit logOpened(QString());
 }
 
 void RefilterDialog::resetToRecorded() {
@@ -249,6 +265,9 @@ void RefilterDialog::propose(SettingEditor& editor, const lessons::SettingValue&
 }
 
 QString RefilterDialog::refilterNow() {
+    if (read_job_) {
+        return tr("The run log is still being read.");
+    }
     if (!log_) {
         return tr("Choose a run log first.");
     }
@@ -267,6 +286,12 @@ void RefilterDialog::startRefilter(const QString& prefix, const QString& message
 }
 
 void RefilterDialog::pollJob() {
+    if (read_job_) {
+        if (read_job_->finished()) {
+            finishReading();
+        }
+        return;
+    }
     if (!job_) {
         poll_->stop();
         return;

@@ -4,38 +4,34 @@
 #include <utility>
 
 namespace legofeup::ui {
+namespace {
+
+std::vector<Wall> walls_of(const lessons::RunConfig& config) {
+    try {
+        return lessons::resolve(config).world.walls;
+    } catch (const std::exception&) {
+        return {};  // a world file that moved: the overlay goes without walls
+    }
+}
+
+}  // namespace
 
 RefilterJob::RefilterJob(std::shared_ptr<const lessons::RunLog> log, lessons::RunConfig new_config)
-    : thread_([this, log = std::move(log), config = std::move(new_config)] {
-          Outcome outcome;
-          try {
-              outcome.result =
-                  lessons::refilter(*log, config, [this](std::size_t done, std::size_t total) {
-                      progress_.store(static_cast<double>(done) / static_cast<double>(total),
-                                      std::memory_order_relaxed);
-                      return !cancelled_.load(std::memory_order_relaxed);
-                  });
-          } catch (const std::exception& error) {  // InputError, RefilterCancelled
-              outcome.error = error.what();
-          }
-          {
-              const std::lock_guard lock(mutex_);
-              outcome_ = std::move(outcome);
-          }
-          finished_.store(true, std::memory_order_release);
+    : BackgroundTask([log = std::move(log),
+                      config = std::move(new_config)](const TaskProgress& progress) {
+          return lessons::refilter(*log, config, [&progress](std::size_t done, std::size_t total) {
+              return progress.report(static_cast<double>(done) / static_cast<double>(total));
+          });
       }) {}
 
-RefilterJob::~RefilterJob() {
-    cancel();
-    thread_.join();
-}
-
-std::optional<RefilterJob::Outcome> RefilterJob::take() {
-    if (!finished()) {
-        return std::nullopt;
-    }
-    const std::lock_guard lock(mutex_);
-    return std::exchange(outcome_, std::nullopt);
-}
+RunLogReadJob::RunLogReadJob(std::string path)
+    : BackgroundTask([path = std::move(path)](const TaskProgress& progress) {
+          ReadRunLog read;
+          auto log = std::make_shared<lessons::RunLog>(lessons::load_run_log(path));
+          read.walls = walls_of(log->config);  // read once, here, not per replay
+          read.log = std::move(log);
+          progress.report(1.0);
+          return read;
+      }) {}
 
 }  // namespace legofeup::ui

@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "legofeup/lessons/lesson.hpp"
+#include "legofeup/report/student_report.hpp"
 
 class QComboBox;
 class QLabel;
@@ -68,6 +69,9 @@ class LessonPanel : public QWidget {
     /// configuration). Returns "" or every problem (file:line).
     QString openAnswers(const QString& path);
     /// Writes report.html and report.pdf into `directory`. Returns "" or why not.
+    /// The student's report as it stands now (steps run, checks, answers), stamped with the
+    /// local time: a copy, to be written anywhere, on any thread.
+    report::StudentReport reportNow() const;
     QString exportReport(const QString& directory) const;
     /// Keeps the names and answers with the preferences now (they are also kept as typed).
     void saveAnswersNow() const;

@@ -27,6 +27,7 @@ class QTableWidget;
 namespace legofeup::ui {
 
 class RefilterJob;
+class RunLogReadJob;
 class RefilterPlots;
 class Session;
 class SettingEditor;
@@ -40,14 +41,15 @@ class RefilterDialog : public QDialog {
     /// Cancels a running replay and waits for its thread (it stops at its next step).
     ~RefilterDialog() override;
 
-    /// Reads a run log and shows its recorded Q and R. Returns "" or the problem (file:line);
-    /// on error the log shown before stays.
-    QString openLog(const QString& path);
+    /// Starts reading a run log (on a worker: a long log is tens of megabytes); when it is
+    /// read, shows its recorded Q and R and replays it, and emits logOpened("") — or, when it
+    /// does not read, keeps the log shown before and emits logOpened(the problem, file:line).
+    void openLog(const QString& path);
     /// Starts replaying the log with the recorded and with the new settings (on a worker);
     /// both are shown, and refiltered() emitted, when it is done. Returns "" or why not.
     QString refilterNow();
-    /// A replay is running (its outcome not shown yet).
-    bool busy() const { return job_ != nullptr; }
+    /// A log is being read or a replay is running (its outcome not shown yet).
+    bool busy() const { return read_job_ != nullptr || job_ != nullptr; }
 
     /// The editor of filter.q11, q22, r11 or r22.
     SettingEditor* editor(const std::string& key) const;
@@ -57,6 +59,8 @@ class RefilterDialog : public QDialog {
     QTableWidget& metricsTable() const { return *metrics_; }
 
   signals:
+    /// A log asked for by openLog() was read and is shown (`problem` empty), or was not.
+    void logOpened(const QString& problem);
     /// A replay finished and its result (or its error) is shown.
     void refiltered();
 
@@ -66,6 +70,8 @@ class RefilterDialog : public QDialog {
     /// verdict.
     void startRefilter(const QString& prefix, const QString& message);
     void pollJob();
+    /// Shows the log read_job_ read (or reports why not).
+    void finishReading();
     void propose(SettingEditor& editor, const lessons::SettingValue& value, const QString& text);
     void resetToRecorded();
     void showMessage(const QString& text, bool error);
@@ -75,6 +81,8 @@ class RefilterDialog : public QDialog {
     std::vector<Wall> walls_;                     ///< the log's world, for the overlay
     lessons::RunConfig new_config_;
     std::optional<lessons::RefilterResult> result_;
+    std::unique_ptr<RunLogReadJob> read_job_;
+    QString reading_path_;  ///< the file read_job_ reads
     std::unique_ptr<RefilterJob> job_;
     QString done_prefix_;
     QString done_message_;
