@@ -115,26 +115,45 @@ void check_laser_beams(const RunConfig& config, ConfigChecker& check) {
 
 }  // namespace
 
-ResolvedRun resolve(const RunConfig& config) {
+std::optional<FileStamp> stamp_of(const std::string& path) {
+    std::error_code error;
+    const std::filesystem::path file(path);
+    if (path.empty() || !std::filesystem::is_regular_file(file, error)) {
+        return std::nullopt;
+    }
+    const auto written = std::filesystem::last_write_time(file, error);
+    const auto size = std::filesystem::file_size(file, error);
+    if (error) {
+        return std::nullopt;
+    }
+    return FileStamp{written, size};
+}
+
+namespace {
+
+/// The world `config` names, read (its own problems carry their lines).
+sim::WorldSpec read_world(const RunConfig& config) {
+    if (config.world_file.empty()) {
+        return built_in_world();
+    }
+    try {
+        return load_world(config.world_file);
+    } catch (const InputError& error) {
+        std::vector<InputProblem> problems = error.problems();
+        if (const auto origin = config.origins.find("world"); origin != config.origins.end()) {
+            problems.push_back({origin->second.source, origin->second.line, "world",
+                                "\"" + config.world_file + "\"", "the world file is unusable"});
+        }
+        throw InputError(std::move(problems));
+    }
+}
+
+/// The rest of resolve(), once the world and the filter's map are at hand.
+ResolvedRun resolve_with(const RunConfig& config, sim::WorldSpec world,
+                         std::shared_ptr<const OccupancyGrid> laser_map) {
     ResolvedRun run;
     run.config = config;
-
-    // The world: built in, or a file (whose own problems carry their lines).
-    if (config.world_file.empty()) {
-        run.world = built_in_world();
-    } else {
-        try {
-            run.world = load_world(config.world_file);
-        } catch (const InputError& error) {
-            std::vector<InputProblem> problems = error.problems();
-            if (const auto origin = config.origins.find("world"); origin != config.origins.end()) {
-                problems.push_back({origin->second.source, origin->second.line, "world",
-                                    "\"" + config.world_file + "\"", "the world file is unusable"});
-            }
-            throw InputError(std::move(problems));
-        }
-    }
-    const std::shared_ptr<const OccupancyGrid> laser_map = filter_map(config, run.world);
+    run.world = std::move(world);
 
     std::vector<ConfigIssue> issues;
     ConfigChecker check(issues);
@@ -243,6 +262,36 @@ ResolvedRun resolve(const RunConfig& config) {
     } else {
         run.max_duration = lapped ? std::min(lap_limit, config.duration) : config.duration;
     }
+    return run;
+}
+
+}  // namespace
+
+ResolvedRun resolve(const RunConfig& config) {
+    // Stamped before reading: a file written meanwhile is read again next time.
+    const std::optional<FileStamp> world_stamp = stamp_of(config.world_file);
+    const std::optional<FileStamp> map_stamp = stamp_of(config.laser_map_file);
+    sim::WorldSpec world = read_world(config);
+    std::shared_ptr<const OccupancyGrid> laser_map = filter_map(config, world);
+    ResolvedRun run = resolve_with(config, std::move(world), std::move(laser_map));
+    run.world_stamp = world_stamp;
+    run.map_stamp = map_stamp;
+    return run;
+}
+
+ResolvedRun resolve(const RunConfig& config, const ResolvedRun& previous) {
+    const std::optional<FileStamp> world_stamp = stamp_of(config.world_file);
+    const std::optional<FileStamp> map_stamp = stamp_of(config.laser_map_file);
+    const bool same_world =
+        config.world_file == previous.config.world_file && world_stamp == previous.world_stamp;
+    const bool same_map = same_world && config.laser_map_file == previous.config.laser_map_file
+                          && map_stamp == previous.map_stamp;
+    sim::WorldSpec world = same_world ? previous.world : read_world(config);
+    std::shared_ptr<const OccupancyGrid> laser_map =
+        same_map ? previous.loop.map : filter_map(config, world);
+    ResolvedRun run = resolve_with(config, std::move(world), std::move(laser_map));
+    run.world_stamp = world_stamp;
+    run.map_stamp = map_stamp;
     return run;
 }
 

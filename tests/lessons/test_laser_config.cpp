@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -122,6 +123,49 @@ TEST(WorldMap, ASurveyedMapIsReadBesideTheWorldsMapAndGoesToTheFilter) {
     EXPECT_EQ(problems[1].key, "map.surveyed");
     EXPECT_EQ(problems[1].line, 3);
     EXPECT_EQ(problems[1].reason, "the map file is unusable");
+}
+
+// A setting edit in the GUI re-resolves with the previous run: the world and map files are
+// not read again unless named anew or changed. Told apart by rewriting the world with its old
+// stamp (size and time kept): taken from the previous run, its old start stays; stamped anew,
+// the file is read again.
+TEST(WorldMap, ResolvingAgainReusesTheFilesReadUnlessTheyChanged) {
+    const fs::path dir = temp_dir();
+    write_room_map(dir / "room.yaml");
+    const fs::path world_file = dir / "world.toml";
+    write_file(world_file, "[start]\nx = 0.25\ny = 0.25\n[map]\nfile = \"room.yaml\"\n");
+    RunConfig config;
+    config.world_file = world_file.string();
+    config.lesson.localisation = Localisation::Laser;
+    const ResolvedRun first = resolve(config);
+    EXPECT_EQ(first.world.start.x, 0.25);
+    ASSERT_TRUE(first.world_stamp.has_value());
+
+    const auto written = fs::last_write_time(world_file);
+    write_file(world_file, "[start]\nx = 0.75\ny = 0.25\n[map]\nfile = \"room.yaml\"\n");
+    fs::last_write_time(world_file, written);  // same size, same time: "unchanged"
+    RunConfig tuned = config;
+    tuned.filter.q11 *= 2.0;
+    const ResolvedRun again = resolve(tuned, first);
+    EXPECT_EQ(again.world.start.x, 0.25);       // not read again
+    EXPECT_EQ(again.loop.map, first.loop.map);  // the same map, not decoded again
+    EXPECT_EQ(again.config.filter.q11, tuned.filter.q11);
+    EXPECT_EQ(resolve(tuned).world.start.x, 0.75);  // what a fresh read gives
+
+    fs::last_write_time(world_file, written + std::chrono::seconds(2));
+    const ResolvedRun changed = resolve(tuned, again);
+    EXPECT_EQ(changed.world.start.x, 0.75);  // changed on disk: read again
+    EXPECT_NE(changed.loop.map, first.loop.map);
+
+    // Another world named: read, whatever the previous run held.
+    RunConfig built_in = tuned;
+    built_in.world_file.clear();
+    built_in.lesson.localisation = Localisation::Walls;  // the arena has no map to localise in
+    EXPECT_EQ(resolve(built_in, changed).world.walls.size(), built_in_world().walls.size());
+    // A problem in the new configuration is still found.
+    RunConfig broken = tuned;
+    broken.filter.r11 = -1.0;
+    EXPECT_THROW(resolve(broken, changed), InputError);
 }
 
 TEST(WorldMap, MapTablesAndStartPosesAreChecked) {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -127,10 +128,24 @@ struct RunConfig {
     std::map<std::string, SettingOrigin> origins;
 };
 
+/// When a file was last written and its size: whether a file read before may have changed.
+struct FileStamp {
+    std::filesystem::file_time_type written;
+    std::uintmax_t size = 0;
+    friend bool operator==(const FileStamp&, const FileStamp&) = default;
+};
+
+/// The stamp of the file at `path`; none when there is no such file (a built-in name).
+std::optional<FileStamp> stamp_of(const std::string& path);
+
 /// A run ready to execute: everything derived, cross-checked and validated.
 struct ResolvedRun {
     RunConfig config;
     sim::WorldSpec world;
+    /// The world file's and the laser map file's stamps as they were read (none for a
+    /// built-in world or map, or none named).
+    std::optional<FileStamp> world_stamp;
+    std::optional<FileStamp> map_stamp;
     LoopConfig loop;
     sim::RobotSpec robot;
     Pose2 true_start;
@@ -140,5 +155,13 @@ struct ResolvedRun {
 /// Loads the world, derives the loop's and the simulator's parameters and validates all of
 /// them. Throws InputError naming each bad setting and where it was set.
 ResolvedRun resolve(const RunConfig& config);
+
+/// As resolve(config), but the world and the laser map that `previous` read are taken again,
+/// not re-read, when `config` names the same world file and map file and those files'
+/// stamps are unchanged. The GUI re-resolves its configuration on every setting edit; a
+/// change of Q must not re-read a world file, nor re-decode a building's map. (A map's YAML
+/// is stamped, not the image it names: an image edited alone is read again when the
+/// configuration is loaded anew.)
+ResolvedRun resolve(const RunConfig& config, const ResolvedRun& previous);
 
 }  // namespace legofeup::lessons
