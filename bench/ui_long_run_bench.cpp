@@ -6,7 +6,8 @@
 // history, 0 = the whole run) and the arena view (1200×900, fitted), the queued replots run
 // and the arena painted after every batch. Each minute of run time it prints the process's
 // resident memory (/proc/self/statm: the simulator, the loop and every view included, as in
-// the application) and the frame times of that minute; at the end, the frame times of the
+// the application), the history's own bytes (RunHistory::bytes(): records, whole samples,
+// trace rows) and the frame times of that minute; at the end, the frame times of the
 // last 600 frames (the built-in counter's window) and the worst minute's p99. Frame times
 // are the GUI thread's CPU time (CLOCK_THREAD_CPUTIME_ID): on a shared machine the wall
 // clock also counts the time other processes had the core.
@@ -141,8 +142,9 @@ class Window final : public lessons::RunObserver {
         std::printf("%s run, %.0f min, %zu samples a frame, plots tab %d, window %g s\n",
                     options.lesson.c_str(), options.minutes, options.samples_per_frame, tab,
                     options.window);
-        std::printf("%6s %8s %12s %13s %22s %22s\n", "minute", "steps", "resident MB",
-                    "whole samples", "plots ms mean/p99/max", "arena ms mean/p99/max");
+        std::printf("%6s %8s %12s %13s %25s %22s %22s\n", "minute", "steps", "resident MB",
+                    "whole samples", "history MB rec/smp/trace", "plots ms mean/p99/max",
+                    "arena ms mean/p99/max");
     }
 
     void on_step(const LoopSnapshot& snapshot, const GroundTruth& truth) override {
@@ -208,9 +210,13 @@ class Window final : public lessons::RunObserver {
         const double resident = resident_mb();
         peak_mb_ = std::max(peak_mb_, resident);
         worst_minute_p99_ = std::max(worst_minute_p99_, plots.p99);
-        std::printf("%6d %8zu %12.1f %13zu %8.1f/%5.1f/%6.1f %8.1f/%5.1f/%6.1f\n", next_minute_,
-                    history_.size(), resident, history_.samples_kept(), plots.mean, plots.p99,
-                    plots.max, arena.mean, arena.p99, arena.max);
+        const ui::RunHistory::Bytes bytes = history_.bytes();
+        std::printf(
+            "%6d %8zu %12.1f %13zu %11.1f/%4.1f/%4.1f/%4.1f %8.1f/%5.1f/%6.1f %8.1f/%5.1f/%6.1f\n",
+            next_minute_, history_.size(), resident, history_.samples_kept(),
+            static_cast<double>(bytes.total()) / 1e6, static_cast<double>(bytes.records) / 1e6,
+            static_cast<double>(bytes.samples) / 1e6, static_cast<double>(bytes.trace) / 1e6,
+            plots.mean, plots.p99, plots.max, arena.mean, arena.p99, arena.max);
         std::fflush(stdout);
         minute_start_ = plot_ms_.size();
         ++next_minute_;

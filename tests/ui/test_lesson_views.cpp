@@ -37,6 +37,10 @@ using testing::one_lap_samples;
 constexpr int kPatienceMs = 30000;
 constexpr std::size_t kSamples = 200;  ///< the first 10 s of the lap: along the bottom wall
 constexpr int kGatedId = 4;
+/// How far a plotted value may be from the number it was made of: the history's record keeps
+/// the plots' numbers as floats (7 significant digits; headings up to π rad: ~1e-5°).
+constexpr double kRecorded = 1e-5;
+constexpr double kRecordedHeading = 1e-4;
 /// Measured − predicted bearing of beacon `id` in the synthetic samples, rad.
 double innovation_of(int id) {
     return id == kGatedId ? 0.2 : 0.05 * id;
@@ -317,12 +321,12 @@ class TestLessonViews : public QObject {
         QCOMPARE(applied->size(), 3 * static_cast<int>(kSamples));
         QCOMPARE(gated->size(), static_cast<int>(kSamples));
         for (auto it = applied->constBegin(); it != applied->constEnd(); ++it) {
-            const bool one_of = std::abs(it->value - radians_to_degrees(0.05)) < 1e-9
-                                || std::abs(it->value - radians_to_degrees(0.10)) < 1e-9
-                                || std::abs(it->value - radians_to_degrees(0.15)) < 1e-9;
+            const bool one_of = std::abs(it->value - radians_to_degrees(0.05)) < kRecorded
+                                || std::abs(it->value - radians_to_degrees(0.10)) < kRecorded
+                                || std::abs(it->value - radians_to_degrees(0.15)) < kRecorded;
             QVERIFY2(one_of, qPrintable(QString::number(it->value)));
         }
-        QVERIFY(std::abs(gated->at(0)->value - 11.459155902616464) < 1e-9);
+        QVERIFY(std::abs(gated->at(0)->value - 11.459155902616464) < kRecorded);
 
         // Position errors against the truth: the EKF is the primary, the UKF the shadow.
         const auto ekf = panel.graph(Series::EkfPositionError)->data();
@@ -338,7 +342,7 @@ class TestLessonViews : public QObject {
             QVERIFY(std::abs(ukf->at(k)->value
                              - std::hypot(x(kX) + kShadowOffset.x() - truth.x,
                                           x(kY) + kShadowOffset.y() - truth.y))
-                    < 1e-12);
+                    < kRecorded);  // the shadow's position is a float, the estimate a double
         }
 
         // Costs in µs, smoothed s ← s + (v − s)/20 from the first value.
@@ -353,9 +357,9 @@ class TestLessonViews : public QObject {
         }
         const auto ekf_costs = panel.graph(Series::EkfCost)->data();
         const auto ukf_costs = panel.graph(Series::UkfCost)->data();
-        QVERIFY(std::abs(ekf_costs->at(ekf_costs->size() - 1)->value - ekf_cost) < 1e-9);
-        QVERIFY(std::abs(ukf_costs->at(ukf_costs->size() - 1)->value - ukf_cost) < 1e-9);
-        QVERIFY(std::abs(ekf_costs->at(0)->value - 20.0) < 1e-9);  // the first value as is
+        QVERIFY(std::abs(ekf_costs->at(ekf_costs->size() - 1)->value - ekf_cost) < kRecorded);
+        QVERIFY(std::abs(ukf_costs->at(ukf_costs->size() - 1)->value - ukf_cost) < kRecorded);
+        QVERIFY(std::abs(ekf_costs->at(0)->value - 20.0) < kRecorded);  // the first value as is
     }
 
     void withoutTheShadowNoComparisonPlots() {
@@ -393,17 +397,19 @@ class TestLessonViews : public QObject {
         const auto rate_true = panel.graph(Series::TurnRateTrue)->data();
         QCOMPARE(gyro->size(), static_cast<int>(kSamples));
         for (int i = 0; i < gyro->size(); ++i) {
-            QVERIFY(std::abs(gyro->at(i)->value - radians_to_degrees(kGyroHeadingError)) < 1e-9);
+            // Headings up to π rad as floats: a few 1e-6 degrees off.
+            QVERIFY(std::abs(gyro->at(i)->value - radians_to_degrees(kGyroHeadingError))
+                    < kRecordedHeading);
             QVERIFY(std::abs(compass->at(i)->value - radians_to_degrees(kCompassHeadingError))
-                    < 1e-9);
+                    < kRecordedHeading);
             QVERIFY(std::abs(rate->at(i)->value - rate_true->at(i)->value
                              - radians_to_degrees(kGyroRateError))
-                    < 1e-9);
+                    < kRecordedHeading);
         }
         const auto kf = panel.graph(Series::WheelRightKf)->data();
         const auto truth = panel.graph(Series::WheelRightTrue)->data();
         QCOMPARE(kf->size(), static_cast<int>(kSamples));
-        QVERIFY(std::abs(kf->at(50)->value - truth->at(50)->value - 0.01) < 1e-12);
+        QVERIFY(std::abs(kf->at(50)->value - truth->at(50)->value - 0.01) < kRecorded);
     }
 
     void lessonPlotsDisappearWhenTheHistoryRestarts() {

@@ -1,6 +1,7 @@
 // The plots panel's data: one point per sample (or per reading, per update), the values read
 // from the right fields, batches adding up to one, the χ² bounds, the time window.
 #include <qcustomplot.h>
+#include <QSet>
 #include <QSignalSpy>
 #include <QTest>
 #include <algorithm>
@@ -37,6 +38,11 @@ int size_of(const PlotsPanel& panel, Series series) {
 double last_value(const PlotsPanel& panel, Series series) {
     const auto data = panel.graph(series)->data();
     return (data->constEnd() - 1)->value;
+}
+
+/// A number as the history's record keeps it (a float) and the plots draw it.
+double as_recorded(double value) {
+    return static_cast<double>(static_cast<float>(value));
 }
 
 /// Both NaN, or equal.
@@ -85,15 +91,17 @@ class PlotsPanelTest : public QObject {
             QCOMPARE(size_of(panel, series), n);
         }
         const RunSample& last = history.latest();
-        QCOMPARE(last_value(panel, Series::Px), last.snapshot.covariance(kX, kX));
-        QCOMPARE(last_value(panel, Series::Py), last.snapshot.covariance(kY, kY));
-        QCOMPARE(last_value(panel, Series::Ptheta), last.snapshot.covariance(kTheta, kTheta));
-        QCOMPARE(last_value(panel, Series::V1Command), last.snapshot.wheels.right);
-        QCOMPARE(last_value(panel, Series::V2Command), last.snapshot.wheels.left);
+        QCOMPARE(last_value(panel, Series::Px), as_recorded(last.snapshot.covariance(kX, kX)));
+        QCOMPARE(last_value(panel, Series::Py), as_recorded(last.snapshot.covariance(kY, kY)));
+        QCOMPARE(last_value(panel, Series::Ptheta),
+                 as_recorded(last.snapshot.covariance(kTheta, kTheta)));
+        QCOMPARE(last_value(panel, Series::V1Command), as_recorded(last.snapshot.wheels.right));
+        QCOMPARE(last_value(panel, Series::V2Command), as_recorded(last.snapshot.wheels.left));
         QCOMPARE(last_value(panel, Series::SigmaXLower),
-                 -std::sqrt(last.snapshot.covariance(kX, kX)));
+                 -std::sqrt(as_recorded(last.snapshot.covariance(kX, kX))));
         QCOMPARE(last_value(panel, Series::SigmaThetaUpper),
-                 std::sqrt(last.snapshot.covariance(kTheta, kTheta)) * 180.0 / std::numbers::pi);
+                 std::sqrt(as_recorded(last.snapshot.covariance(kTheta, kTheta))) * 180.0
+                     / std::numbers::pi);
         QCOMPARE(last_value(panel, Series::ErrorY),
                  last.snapshot.estimate(kY) - last.truth->pose.y);
         QCOMPARE(last_value(panel, Series::Nees), last.nees);
@@ -104,9 +112,9 @@ class PlotsPanelTest : public QObject {
         const RunSample& old = one_lap_samples()[kDropped];
         const auto at = [&](Series series) { return panel.graph(series)->data()->at(kDropped); };
         QCOMPARE(at(Series::Px)->key, old.snapshot.time);
-        QCOMPARE(at(Series::Px)->value, old.snapshot.covariance(kX, kX));
+        QCOMPARE(at(Series::Px)->value, as_recorded(old.snapshot.covariance(kX, kX)));
         QCOMPARE(at(Series::ErrorY)->value, old.snapshot.estimate(kY) - old.truth->pose.y);
-        QCOMPARE(at(Series::V2Command)->value, old.snapshot.wheels.left);
+        QCOMPARE(at(Series::V2Command)->value, as_recorded(old.snapshot.wheels.left));
         QCOMPARE(at(Series::Nees)->value, old.nees);
     }
 
@@ -123,7 +131,7 @@ class PlotsPanelTest : public QObject {
                 const auto& reading = sample.snapshot.ir[static_cast<std::size_t>(sensor)].reading;
                 if (reading.in_range()) {
                     ++in_range;
-                    QCOMPARE(point->value, reading.distance);
+                    QCOMPARE(point->value, as_recorded(reading.distance));
                 } else {
                     QVERIFY(std::isnan(point->value));
                 }
@@ -150,7 +158,7 @@ class PlotsPanelTest : public QObject {
         }
         QVERIFY(updates > 100);
         QCOMPARE(size_of(panel, Series::Nis), updates);
-        QCOMPARE(last_value(panel, Series::Nis), last_nis);
+        QCOMPARE(last_value(panel, Series::Nis), as_recorded(last_nis));
     }
 
     void heading_error_is_wrapped() {
@@ -375,6 +383,18 @@ class PlotsPanelTest : public QObject {
         auto* tabs = panel.findChild<QTabWidget*>();
         tabs->setCurrentIndex(2);  // … until shown
         QTRY_COMPARE(hidden_replots.count(), 1);
+        // A hidden plot keeps no picture (one paint buffer per shown plot): shown again, it is
+        // replotted at once, so its first paint is the plot and not a blank.
+        tabs->setCurrentIndex(0);
+        QTRY_COMPARE(replots.count(), 2);
+        const QImage image = panel.plot(PlotKind::Covariance)->grab().toImage();
+        QSet<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 3) {
+            for (int x = 0; x < image.width(); x += 3) {
+                colours.insert(image.pixel(x, y));
+            }
+        }
+        QVERIFY2(colours.size() > 3, qPrintable(QString::number(colours.size())));
     }
 
     void text_scale_and_palette_reach_the_plots() {

@@ -73,8 +73,37 @@ TEST(RunHistory, AThirtyMinuteRunKeepsFewWholeSamplesButEveryRecord) {
     // Every record has its step's numbers.
     for (std::size_t i = 0; i < steps; i += 997) {
         EXPECT_DOUBLE_EQ(history.record(i).time, static_cast<double>(i) * kPeriod);
-        EXPECT_DOUBLE_EQ(history.record(i).pxx, 1e-4 * static_cast<double>(i));
+        EXPECT_EQ(history.record(i).pxx, static_cast<float>(1e-4 * static_cast<double>(i)));
     }
+}
+
+TEST(RunHistory, AThirtyMinuteRunHoldsItsRecordsAndFewSamplesInBoundedBytes) {
+    RunHistory history;
+    history.restart({});
+    const std::size_t steps = 30 * 60 * 20;
+    run_for(history, steps, 2);
+    const RunHistory::Bytes bytes = history.bytes();
+    // Every step's record, and no more than the vector's doubling adds to it.
+    EXPECT_GE(bytes.records, steps * sizeof(StepRecord));
+    EXPECT_LE(bytes.records, 2 * steps * sizeof(StepRecord));
+    // Whole samples: the recent ones and one a second (~2,400 of 5.9 kB, not 36,000).
+    EXPECT_EQ(bytes.samples, history.samples_kept() * sizeof(RunSample));
+    EXPECT_LE(bytes.samples, most_whole_samples(steps) * sizeof(RunSample));
+    // Together under a third of the 120 MB a 30-minute wall run may take (docs/gui.md).
+    EXPECT_LT(bytes.total(), std::size_t{40} << 20);
+}
+
+TEST(RunHistory, TheTraceRowsAreKeptDeflated) {
+    const ui::testing::LockstepRun run = ui::testing::lockstep_run("f", 1);  // ~1,700 steps
+    const RunHistory history = ui::testing::history_of(run);
+    const std::size_t text = history.trace_csv().size();
+    const std::size_t kept = history.bytes().trace;
+    // Blocks of 256 kB deflated to less than half (their buffers squeezed to what deflate
+    // wrote: otherwise each keeps its input's size), and the open block's buffer, which
+    // grows to twice a block as it fills past one.
+    constexpr std::size_t kBlock = std::size_t{256} << 10;
+    ASSERT_GT(text, 3 * kBlock);
+    EXPECT_LT(kept, text / 2 + 2 * kBlock) << "kept " << kept << " bytes of " << text;
 }
 
 TEST(RunHistory, BeforeTheRecentRunOneWholeSampleASecondIsKept) {
@@ -158,16 +187,17 @@ TEST(RunHistory, EveryRecordHasItsSamplesNumbersAndTheTraceEveryRow) {
         const StepRecord& record = history.record(i);
         ASSERT_EQ(record.time, x.time) << i;
         ASSERT_EQ(record.estimate, to_pose(x.estimate)) << i;
-        ASSERT_EQ(record.pxx, x.covariance(kX, kX)) << i;
-        ASSERT_EQ(record.pxy, x.covariance(kX, kY)) << i;
-        ASSERT_EQ(record.ptt, x.covariance(kTheta, kTheta)) << i;
-        ASSERT_EQ(record.odometry.x(), x.odometry_pose.x) << i;
-        ASSERT_EQ(record.wheels.right, x.wheels.right) << i;
+        // The plots' numbers as floats (run_history.hpp), the poses as doubles.
+        ASSERT_EQ(record.pxx, static_cast<float>(x.covariance(kX, kX))) << i;
+        ASSERT_EQ(record.pxy, static_cast<float>(x.covariance(kX, kY))) << i;
+        ASSERT_EQ(record.ptt, static_cast<float>(x.covariance(kTheta, kTheta))) << i;
+        ASSERT_EQ(record.odometry.x(), static_cast<float>(x.odometry_pose.x)) << i;
+        ASSERT_EQ(record.wheels.right, static_cast<float>(x.wheels.right)) << i;
         ASSERT_TRUE(record.has_truth);
         ASSERT_EQ(record.truth, run.samples[i].truth->pose) << i;
         ASSERT_TRUE(std::isnan(record.nees) == std::isnan(run.samples[i].nees)) << i;
         if (x.update.status != StepStatus::NotAttempted && std::isfinite(x.update.nis)) {
-            ASSERT_EQ(record.wall_nis, x.update.nis) << i;
+            ASSERT_EQ(record.wall_nis, static_cast<float>(x.update.nis)) << i;
         } else {
             ASSERT_TRUE(std::isnan(record.wall_nis)) << i;
         }

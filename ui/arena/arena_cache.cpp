@@ -36,7 +36,7 @@ CovarianceEllipse sample_ellipse(const RunSample& sample, EllipseConfidence leve
 
 CovarianceEllipse sample_ellipse(const StepRecord& record, EllipseConfidence level) {
     Eigen::Matrix2d position_block;
-    position_block << record.pxx, record.pxy, record.pxy, record.pyy;
+    position_block << widen(record.pxx), widen(record.pxy), widen(record.pxy), widen(record.pyy);
     return covariance_ellipse(position_of(record.estimate), position_block, level);
 }
 
@@ -155,7 +155,7 @@ void ArenaCache::update(const RunHistory& history, EllipseConfidence level) {
 void ArenaCache::take_sample(const StepRecord& record, std::size_t index, EllipseConfidence level) {
     const QPointF estimate(record.estimate.x, record.estimate.y);
     estimate_.append(estimate);
-    odometry_.append({record.odometry.x(), record.odometry.y()});
+    odometry_.append({widen(record.odometry.x()), widen(record.odometry.y())});
     data_bounds_.add(estimate);
     if (record.has_truth) {
         if (record.teleports != truth_teleports_ && truth_.size() > 0) {

@@ -37,7 +37,7 @@ constexpr int kColourGated = 1;
 constexpr double kCostSmoothing = 0.05;
 
 double variance(const StepRecord& s, int i) {
-    return i == kX ? s.pxx : i == kY ? s.pyy : s.ptt;
+    return widen(i == kX ? s.pxx : i == kY ? s.pyy : s.ptt);
 }
 double sigma(const StepRecord& s, int i) {
     return std::sqrt(std::max(variance(s, i), 0.0));
@@ -89,30 +89,30 @@ std::optional<double> error_theta(const StepRecord& s) {
     return radians_to_degrees(pose_error_component(s, kTheta));
 }
 std::optional<double> v1_true(const StepRecord& s) {
-    return s.has_truth ? s.true_wheel_speeds.right : kNaN;
+    return s.has_truth ? widen(s.true_wheel_speeds.right) : kNaN;
 }
 std::optional<double> v2_true(const StepRecord& s) {
-    return s.has_truth ? s.true_wheel_speeds.left : kNaN;
+    return s.has_truth ? widen(s.true_wheel_speeds.left) : kNaN;
 }
 std::optional<double> v1_command(const StepRecord& s) {
-    return s.wheels.right;
+    return widen(s.wheels.right);
 }
 std::optional<double> v2_command(const StepRecord& s) {
-    return s.wheels.left;
+    return widen(s.wheels.left);
 }
 /// The measured IR distance, m; NaN (a gap) when the reading is out of range.
 std::optional<double> ds1(const StepRecord& s) {
-    return s.ir_distance[kFrontSensor];
+    return widen(s.ir_distance[kFrontSensor]);
 }
 std::optional<double> ds2(const StepRecord& s) {
-    return s.ir_distance[kRearSensor];
+    return widen(s.ir_distance[kRearSensor]);
 }
 /// One point per wall update that computed an NIS (applied or rejected by the gate).
 std::optional<double> nis(const StepRecord& s) {
     if (!std::isfinite(s.wall_nis)) {
         return std::nullopt;
     }
-    return s.wall_nis;
+    return widen(s.wall_nis);
 }
 std::optional<double> nees(const StepRecord& s) {
     return s.nees;
@@ -131,7 +131,8 @@ int bearing_innovations(const StepRecord& s, std::span<double, kMaxPointsPerSamp
         if (s.bearing_applied[k] != applied) {
             continue;
         }
-        out[static_cast<std::size_t>(written++)] = radians_to_degrees(s.bearing_innovation[k]);
+        out[static_cast<std::size_t>(written++)] =
+            radians_to_degrees(widen(s.bearing_innovation[k]));
     }
     return written;
 }
@@ -160,38 +161,38 @@ std::optional<double> heading_error_gyro(const StepRecord& s) {
     if (!s.has_gyro) {
         return std::nullopt;
     }
-    return heading_error_degrees(s, s.gyro_heading);
+    return heading_error_degrees(s, widen(s.gyro_heading));
 }
 std::optional<double> heading_error_compass(const StepRecord& s) {
     if (!s.has_compass) {
         return std::nullopt;
     }
-    return heading_error_degrees(s, s.compass_heading);
+    return heading_error_degrees(s, widen(s.compass_heading));
 }
 
 std::optional<double> turn_rate_true(const StepRecord& s) {
     if (!s.has_gyro) {
         return std::nullopt;
     }
-    return s.has_truth ? radians_to_degrees(s.true_turn_rate) : kNaN;
+    return s.has_truth ? radians_to_degrees(widen(s.true_turn_rate)) : kNaN;
 }
 std::optional<double> turn_rate_gyro(const StepRecord& s) {
     if (!s.has_gyro) {
         return std::nullopt;
     }
-    return radians_to_degrees(s.gyro_rate);
+    return radians_to_degrees(widen(s.gyro_rate));
 }
 std::optional<double> turn_rate_encoders(const StepRecord& s) {
     if (!s.has_gyro || !s.speeds_valid) {
         return std::nullopt;
     }
-    return radians_to_degrees(s.encoder_turn_rate);
+    return radians_to_degrees(widen(s.encoder_turn_rate));
 }
 std::optional<double> turn_rate_fused(const StepRecord& s) {
     if (s.localisation != Localisation::GyroFusion) {
         return std::nullopt;
     }
-    return radians_to_degrees(s.fused_turn_rate);
+    return radians_to_degrees(widen(s.fused_turn_rate));
 }
 
 /// The wheel-speed estimates (computed in every run) belong to the lessons of paper 003: a
@@ -207,7 +208,7 @@ std::optional<double> wheel_true(const StepRecord& s, bool right) {
     if (!s.has_truth) {
         return kNaN;
     }
-    return right ? s.true_wheel_speeds.right : s.true_wheel_speeds.left;
+    return widen(right ? s.true_wheel_speeds.right : s.true_wheel_speeds.left);
 }
 std::optional<double> wheel_right_true(const StepRecord& s) {
     return wheel_true(s, true);
@@ -215,12 +216,12 @@ std::optional<double> wheel_right_true(const StepRecord& s) {
 std::optional<double> wheel_left_true(const StepRecord& s) {
     return wheel_true(s, false);
 }
-std::optional<double> wheel_estimate(const StepRecord& s, const std::array<double, 2>& speeds,
+std::optional<double> wheel_estimate(const StepRecord& s, const std::array<float, 2>& speeds,
                                      int wheel) {
     if (!has_wheel_speed_estimates(s)) {
         return std::nullopt;
     }
-    return speeds[static_cast<std::size_t>(wheel)];
+    return widen(speeds[static_cast<std::size_t>(wheel)]);
 }
 std::optional<double> wheel_right_kf(const StepRecord& s) {
     return wheel_estimate(s, s.wheel_kf, 0);
@@ -246,10 +247,10 @@ std::optional<KindEstimate> estimate_of(const StepRecord& s, FilterKind kind) {
         return std::nullopt;
     }
     if (s.filter_kind == kind) {
-        return KindEstimate{position_of(s.estimate), s.filter_seconds};
+        return KindEstimate{position_of(s.estimate), widen(s.filter_seconds)};
     }
     if (s.shadow_kind == kind) {
-        return KindEstimate{s.shadow_position, s.shadow_filter_seconds};
+        return KindEstimate{s.shadow_position.cast<double>(), widen(s.shadow_filter_seconds)};
     }
     return std::nullopt;
 }
@@ -324,8 +325,8 @@ std::optional<double> laser_innovation(const StepRecord& s, int i) {
     if (laser == nullptr || !laser->updated) {
         return std::nullopt;
     }
-    return i == kTheta ? radians_to_degrees(laser->innovation(kTheta))
-                       : 100.0 * laser->innovation(i);
+    return i == kTheta ? radians_to_degrees(widen(laser->innovation(kTheta)))
+                       : 100.0 * widen(laser->innovation(i));
 }
 std::optional<double> laser_innovation_x(const StepRecord& s) {
     return laser_innovation(s, kX);

@@ -15,7 +15,17 @@ namespace legofeup::ui {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr float kRecordNaN = std::numeric_limits<float>::quiet_NaN();
+
+float as_record_float(double value) {
+    return static_cast<float>(value);
+}
+RecordedWheelSpeeds recorded_speeds(const WheelSpeeds& speeds) {
+    return {as_record_float(speeds.right), as_record_float(speeds.left)};
+}
+std::array<float, 2> recorded_pair(const std::array<double, 2>& pair) {
+    return {as_record_float(pair[0]), as_record_float(pair[1])};
+}
 
 void record_beacons(const BeaconUpdates& beacons, StepRecord& record) {
     const int count = std::min<int>(beacons.count, kMaxBeaconSightings);
@@ -25,7 +35,8 @@ void record_beacons(const BeaconUpdates& beacons, StepRecord& record) {
             continue;
         }
         const auto k = static_cast<std::size_t>(record.bearing_count++);
-        record.bearing_innovation[k] = wrap_angle(update.bearing - update.predicted);
+        record.bearing_innovation[k] =
+            as_record_float(wrap_angle(update.bearing - update.predicted));
         record.bearing_applied[k] = update.status == StepStatus::Applied;
     }
 }
@@ -38,37 +49,40 @@ LaserNumbers laser_numbers(const LaserUpdate& laser) {
     numbers.recovery_triggered = laser.recovery_triggered;
     numbers.matched_points = laser.icp.matched_points;
     numbers.consecutive_mismatches = laser.consecutive_mismatches;
-    numbers.innovation = laser.innovation;
+    numbers.innovation = laser.innovation.cast<float>();
     return numbers;
 }
 
 }  // namespace
+
+static_assert(sizeof(StepRecord) <= 264, "a record is kept for every step: keep it small");
 
 StepRecord make_step_record(const RunSample& sample) {
     const LoopSnapshot& x = sample.snapshot;
     StepRecord record;
     record.time = x.time;
     record.estimate = to_pose(x.estimate);
-    record.pxx = x.covariance(kX, kX);
-    record.pxy = x.covariance(kX, kY);
-    record.pyy = x.covariance(kY, kY);
-    record.ptt = x.covariance(kTheta, kTheta);
-    record.odometry = Vector2(x.odometry_pose.x, x.odometry_pose.y);
-    record.wheels = x.wheels;
+    record.pxx = as_record_float(x.covariance(kX, kX));
+    record.pxy = as_record_float(x.covariance(kX, kY));
+    record.pyy = as_record_float(x.covariance(kY, kY));
+    record.ptt = as_record_float(x.covariance(kTheta, kTheta));
+    record.odometry =
+        Eigen::Vector2f(as_record_float(x.odometry_pose.x), as_record_float(x.odometry_pose.y));
+    record.wheels = recorded_speeds(x.wheels);
     for (std::size_t i = 0; i < record.ir_distance.size(); ++i) {
         const IrDistance& reading = x.ir[i].reading;
-        record.ir_distance[i] = reading.in_range() ? reading.distance : kNaN;
+        record.ir_distance[i] = reading.in_range() ? as_record_float(reading.distance) : kRecordNaN;
     }
     if (x.update.status != StepStatus::NotAttempted && std::isfinite(x.update.nis)) {
-        record.wall_nis = x.update.nis;
+        record.wall_nis = as_record_float(x.update.nis);
     }
     record.nees = sample.nees;
     if (sample.truth) {
         record.has_truth = true;
         record.teleports = sample.truth->teleports;
         record.truth = sample.truth->pose;
-        record.true_wheel_speeds = sample.truth->wheel_surface_speeds;
-        record.true_turn_rate = sample.truth->velocity.w;
+        record.true_wheel_speeds = recorded_speeds(sample.truth->wheel_surface_speeds);
+        record.true_turn_rate = as_record_float(sample.truth->velocity.w);
     }
     record.localisation = x.localisation;
     record.filter_kind = x.filter_kind;
@@ -76,19 +90,20 @@ StepRecord make_step_record(const RunSample& sample) {
     record.has_gyro = x.readings.has_gyro;
     record.has_compass = x.readings.has_compass;
     record.has_accelerometers = x.readings.has_accelerometers;
-    record.gyro_rate = x.readings.gyro_rate;
-    record.gyro_heading = x.readings.gyro_heading;
-    record.compass_heading = x.readings.compass_heading;
+    record.gyro_rate = as_record_float(x.readings.gyro_rate);
+    record.gyro_heading = as_record_float(x.readings.gyro_heading);
+    record.compass_heading = as_record_float(x.readings.compass_heading);
     record.speeds_valid = x.speeds.valid;
-    record.wheel_kf = x.speeds.wheel_kf;
-    record.wheel_differentiated = x.speeds.wheel_differentiated;
-    record.encoder_turn_rate = x.speeds.body_encoders.w;
-    record.fused_turn_rate = x.fused_velocity.w;
+    record.wheel_kf = recorded_pair(x.speeds.wheel_kf);
+    record.wheel_differentiated = recorded_pair(x.speeds.wheel_differentiated);
+    record.encoder_turn_rate = as_record_float(x.speeds.body_encoders.w);
+    record.fused_turn_rate = as_record_float(x.fused_velocity.w);
     record.shadow_active = x.shadow.active;
     record.shadow_kind = x.shadow.kind;
-    record.shadow_position = Vector2(x.shadow.estimate(kX), x.shadow.estimate(kY));
-    record.filter_seconds = x.filter_seconds;
-    record.shadow_filter_seconds = x.shadow_filter_seconds;
+    record.shadow_position = Eigen::Vector2f(as_record_float(x.shadow.estimate(kX)),
+                                             as_record_float(x.shadow.estimate(kY)));
+    record.filter_seconds = as_record_float(x.filter_seconds);
+    record.shadow_filter_seconds = as_record_float(x.shadow_filter_seconds);
     record.laser = laser_numbers(x.laser);
     return record;
 }
@@ -120,8 +135,17 @@ class RunHistory::TraceRows {
         if (open_.size() >= kBlockBytes) {
             packed_.push_back(qCompress(reinterpret_cast<const uchar*>(open_.data()),
                                         static_cast<qsizetype>(open_.size()), kLevel));
+            packed_.back().squeeze();  // qCompress leaves the input's size reserved
             open_.clear();
         }
+    }
+    /// The rows' bytes: the deflated blocks and the open one.
+    std::size_t bytes() const {
+        std::size_t bytes = open_.capacity() + packed_.capacity() * sizeof(QByteArray);
+        for (const QByteArray& block : packed_) {
+            bytes += static_cast<std::size_t>(block.capacity());
+        }
+        return bytes;
     }
     std::string text() const {
         std::string all;
@@ -224,6 +248,14 @@ std::pair<std::size_t, const RunSample*> RunHistory::nearest_sample(std::size_t 
 
 std::string RunHistory::trace_csv() const {
     return trace_->text();
+}
+
+RunHistory::Bytes RunHistory::bytes() const {
+    Bytes bytes;
+    bytes.records = records_.capacity() * sizeof(StepRecord);
+    bytes.samples = (recent_.size() + older_.size()) * sizeof(RunSample);
+    bytes.trace = trace_->bytes();
+    return bytes;
 }
 
 }  // namespace legofeup::ui

@@ -1,7 +1,8 @@
 #pragma once
 // What the views draw: every step of the current run, on the GUI thread, in a memory that
-// grows by ~0.9 kB a step instead of a whole sample's 5.9 kB (two 1024-beam scans alone are
-// 4 kB, in every snapshot of every lesson).
+// grows by ~0.75 kB a step (a 256-byte record, a deflated trace row of ~0.2 kB, a whole
+// sample a second) instead of a whole sample's 5.9 kB (two 1024-beam scans alone are 4 kB,
+// in every snapshot of every lesson); bytes() tells how much.
 //
 // The session's worker thread produces RunSamples; the session moves them here in one batch
 // per repaint (docs/gui.md) and tells the views which ones are new. Of every step the history
@@ -10,6 +11,7 @@
 // steps, the latest batch, and one step per kKeptPeriod of run time before them. Views read
 // this history only on the GUI thread, so it needs no lock.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -79,64 +81,82 @@ struct LaserNumbers {
     bool matched = false;    ///< its match was used
     bool updated = false;    ///< the H = I update ran (status other than NotAttempted)
     bool recovery_triggered = false;
-    int matched_points = 0;  ///< ICP's
-    int consecutive_mismatches = 0;
-    Eigen::Vector3d innovation = Eigen::Vector3d::Zero();  ///< V = Z − Ẑ, m and rad
+    std::int32_t matched_points = 0;  ///< ICP's
+    std::int32_t consecutive_mismatches = 0;
+    Eigen::Vector3f innovation = Eigen::Vector3f::Zero();  ///< V = Z − Ẑ, m and rad
+};
+
+/// Two wheels' speeds as a record keeps them, m/s.
+struct RecordedWheelSpeeds {
+    float right = 0.0F;  ///< V1
+    float left = 0.0F;   ///< V2
 };
 
 /// What the history keeps of every step, also once the step's sample is dropped: the numbers
 /// the plots draw (plot_series.cpp reads nothing else) and the arena's paths and covariance
-/// trail. 432 bytes; make_step_record() fills it from a sample.
+/// trail. make_step_record() fills it from a sample.
+///
+/// 264 bytes, 36,000 of them in a 30-minute run: the time, the estimate, the truth and NEES
+/// are doubles (the arena's paths, and the errors and the lesson panel's checks computed from
+/// them, are exact); every other number is a float, 7 significant digits, finer than any
+/// plot's pixel; the members are ordered by size, so there is no padding between them.
 struct StepRecord {
     double time = 0.0;  ///< the frame's time stamp, s
     Pose2 estimate;     ///< x̂, ŷ, θ̂
-    /// P's pose block: the three variances and the x–y covariance (m², rad²).
-    double pxx = 0.0;
-    double pxy = 0.0;
-    double pyy = 0.0;
-    double ptt = 0.0;
-    Vector2 odometry = Vector2::Zero();  ///< the dead-reckoning position
-    WheelSpeeds wheels;                  ///< (V1, V2) sent to the robot
-    /// The IR distances ds1, ds2 as measured, m; NaN when out of range.
-    std::array<double, kIrSensorCount> ir_distance{};
-    /// NIS of the wall update, if one ran and computed it (NaN otherwise).
-    double wall_nis = std::numeric_limits<double>::quiet_NaN();
+    Pose2 truth;        ///< the truth at the step's time (when has_truth)
     double nees = std::numeric_limits<double>::quiet_NaN();  ///< RunSample::nees
 
-    /// The truth at the step's time (has_truth false over a link without one).
-    bool has_truth = false;
-    std::uint32_t teleports = 0;  ///< GroundTruth::teleports
-    Pose2 truth;
-    WheelSpeeds true_wheel_speeds;
-    double true_turn_rate = 0.0;  ///< rad/s
+    /// P's pose block: the three variances and the x–y covariance (m², rad²).
+    float pxx = 0.0F;
+    float pxy = 0.0F;
+    float pyy = 0.0F;
+    float ptt = 0.0F;
+    Eigen::Vector2f odometry = Eigen::Vector2f::Zero();  ///< the dead-reckoning position
+    RecordedWheelSpeeds wheels;                          ///< (V1, V2) sent to the robot
+    /// The IR distances ds1, ds2 as measured, m; NaN when out of range.
+    std::array<float, kIrSensorCount> ir_distance{};
+    /// NIS of the wall update, if one ran and computed it (NaN otherwise).
+    float wall_nis = std::numeric_limits<float>::quiet_NaN();
 
+    std::uint32_t teleports = 0;  ///< GroundTruth::teleports
+    RecordedWheelSpeeds true_wheel_speeds;
+    float true_turn_rate = 0.0F;  ///< rad/s
+
+    /// Beacon updates with a known beacon that computed an innovation (paper 002): the bearing
+    /// innovations z − h(X̂) in rad, wrapped (bearing_count of them), and whether each was
+    /// applied.
+    std::array<float, kMaxBeaconSightings> bearing_innovation{};
+    // Paper 003's sensors and estimates.
+    float gyro_rate = 0.0F;     ///< rad/s
+    float gyro_heading = 0.0F;  ///< rad
+    float compass_heading = 0.0F;
+    std::array<float, 2> wheel_kf{};              ///< [right, left], m/s
+    std::array<float, 2> wheel_differentiated{};  ///< [right, left], m/s
+    float encoder_turn_rate = 0.0F;               ///< ω from differentiated encoders, rad/s
+    float fused_turn_rate = 0.0F;                 ///< the 5-state EKF's ω, rad/s
+    // The comparison filter run on the same frames (paper 002).
+    Eigen::Vector2f shadow_position = Eigen::Vector2f::Zero();
+    float filter_seconds = 0.0F;
+    float shadow_filter_seconds = 0.0F;
+    LaserNumbers laser;
+
+    std::array<bool, kMaxBeaconSightings> bearing_applied{};
+    std::uint8_t bearing_count = 0;
+    bool has_truth = false;  ///< false over a link without a truth: `truth` is not set
     Localisation localisation = Localisation::Walls;
     FilterKind filter_kind = FilterKind::Ekf;
-    /// Beacon updates with a known beacon that computed an innovation (paper 002): the bearing
-    /// innovations z − h(X̂) in rad, wrapped, and whether each was applied.
-    std::uint8_t bearing_count = 0;
-    std::array<double, kMaxBeaconSightings> bearing_innovation{};
-    std::array<bool, kMaxBeaconSightings> bearing_applied{};
-    // Paper 003's sensors and estimates.
     bool has_gyro = false;
     bool has_compass = false;
     bool has_accelerometers = false;
     bool speeds_valid = false;
-    double gyro_rate = 0.0;     ///< rad/s
-    double gyro_heading = 0.0;  ///< rad
-    double compass_heading = 0.0;
-    std::array<double, 2> wheel_kf{};              ///< [right, left], m/s
-    std::array<double, 2> wheel_differentiated{};  ///< [right, left], m/s
-    double encoder_turn_rate = 0.0;                ///< ω from differentiated encoders, rad/s
-    double fused_turn_rate = 0.0;                  ///< the 5-state EKF's ω, rad/s
-    // The comparison filter run on the same frames (paper 002).
     bool shadow_active = false;
     FilterKind shadow_kind = FilterKind::Ukf;
-    Vector2 shadow_position = Vector2::Zero();
-    double filter_seconds = 0.0;
-    double shadow_filter_seconds = 0.0;
-    LaserNumbers laser;
 };
+
+/// A record's float as the double the views compute with.
+constexpr double widen(float value) {
+    return static_cast<double>(value);
+}
 
 /// The record of one sample (every number a StepRecord holds, from its snapshot and truth).
 StepRecord make_step_record(const RunSample& sample);
@@ -187,6 +207,16 @@ class RunHistory {
     /// Every step in the CLI's trace.csv format, with its header (written as the steps come).
     std::string trace_csv() const;
 
+    /// The bytes the history holds for its steps, by part: what it allocated (capacity
+    /// included), not what the allocator adds to it.
+    struct Bytes {
+        std::size_t records = 0;  ///< every step's StepRecord
+        std::size_t samples = 0;  ///< the whole samples kept
+        std::size_t trace = 0;    ///< the trace rows: deflated blocks and the open one
+        std::size_t total() const { return records + samples + trace; }
+    };
+    Bytes bytes() const;
+
   private:
     struct KeptSample {
         std::size_t step = 0;
@@ -199,8 +229,9 @@ class RunHistory {
 
     ArenaScene scene_;
     std::vector<StepRecord> records_;
-    std::deque<RunSample> recent_;   ///< steps recent_begin() … size() − 1
-    std::vector<KeptSample> older_;  ///< one per kKeptPeriod before them, in order
+    std::deque<RunSample> recent_;  ///< steps recent_begin() … size() − 1
+    /// One per kKeptPeriod before them, in order (a deque: never copied as it grows).
+    std::deque<KeptSample> older_;
     /// A sample leaving recent_ is kept in older_ if its time is at least this (the first
     /// always is): the first sample of each kKeptPeriod.
     double next_kept_time_ = -std::numeric_limits<double>::infinity();

@@ -4,11 +4,12 @@
 //
 // It follows the RunHistory incrementally: samplesAppended adds only the new samples' points
 // and queues one replot per visible plot (repaints coalesce into one per event-loop turn);
-// hidden plots are replotted when they are shown. The y axes rescale to the visible data
-// without scanning the whole run: running extents for the whole-run view, a scan of the
-// window's points (found by binary search) for the scrolling view. A view of more than
-// kDenseView samples (the whole of a long run) is drawn lighter: the ±σ bands as outlines
-// and the lines 1 px thinner, since filling a band through 36,000 samples costs the
+// hidden plots are replotted when they are shown, and keep no picture while hidden (one
+// paint buffer per shown plot, none per hidden one: plots_panel.cpp's PanelPlot). The y
+// axes rescale to the visible data without scanning the whole run: running extents for the
+// whole-run view, a scan of the window's points (found by binary search) for the scrolling view. A
+// view of more than kDenseView samples (the whole of a long run) is drawn lighter: the ±σ bands as
+// outlines and the lines 1 px thinner, since filling a band through 36,000 samples costs the
 // rasteriser ~30 ms a frame and wide antialiased lines half as much again.
 
 #include <QBrush>
@@ -147,7 +148,6 @@ class PlotsPanel : public QWidget {
     bool no_truth_shown_ = false;
     int wanted_tab_ = 0;
 
-    std::array<bool, kPlotKindCount> stale_{};           ///< changed while hidden
     std::array<bool, kPlotKindCount> replot_pending_{};  ///< queued, not yet run
     std::chrono::steady_clock::time_point replot_started_;
     std::chrono::nanoseconds frame_time_{0};
