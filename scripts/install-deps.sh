@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages LegoFeup Lab needs to build, test and run. Does nothing
-# (and needs no network or root) when they are already installed.
+# (and needs no network or root) when they are already installed. (*): needed only with the
+# NXT (-DLEGOFEUP_WITH_NXT=ON, the default); a build configured with it OFF does without them.
 set -euo pipefail
 
 packages=(
@@ -13,11 +14,11 @@ packages=(
     libcli11-dev libcairo2-dev fonts-dejavu-core  # legofeup-cli: options, PNG/SVG plots
     libpango1.0-dev                     # report/: the student report's PDF (wrapped text)
     qt6-base-dev qt6-svg-dev libqcustomplot-dev  # ui/: the desktop application
-    qt6-connectivity-dev                # ui/: Bluetooth scanning in the NXT connect dialog
+    qt6-connectivity-dev                # ui/: Bluetooth scanning in the NXT connect dialog (*)
     xvfb xauth                          # scripts/screenshots.sh: the GUI on a virtual display
     libgtest-dev libgmock-dev           # tests
     libbenchmark-dev                    # bench/
-    libbluetooth-dev                    # comms/: BlueZ RFCOMM sockets for bt: brick addresses
+    libbluetooth-dev                    # comms/: BlueZ RFCOMM sockets for bt: brick addresses (*)
     nbc                                 # tests: compile-check the NXC relay program
     clang lld libclang-rt-14-dev        # the dev and asan presets' compiler and linker; libFuzzer
     python3                             # examples/python and its test

@@ -17,13 +17,14 @@
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/input_error.hpp"
 #include "legofeup/lessons/lockstep_run.hpp"
-#include "legofeup/lessons/nxt_run.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
+#include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
 #include "legofeup/lessons/udp_run.hpp"
 #include "legofeup/report/run_plots.hpp"
 #include "legofeup/version.hpp"
+#include "nxt_choice.hpp"
 #include "output_directory.hpp"
 #include "progress_bar.hpp"
 
@@ -51,31 +52,32 @@ class Observers final : public lessons::RunObserver {
 /// The link a run uses: the deterministic in-process simulator, a server over UDP, or an NXT.
 struct LinkChoice {
     std::optional<lessons::UdpTarget> udp;  ///< both unset: lockstep
-    std::optional<lessons::NxtTarget> nxt;
+    std::unique_ptr<NxtChoice> nxt;
 
     std::string describe() const {
         if (nxt) {
-            return nxt->link.address.to_string();
+            return nxt->address();
         }
         return udp ? "udp://" + udp->robot.to_string() : "lockstep";
     }
 };
 
 LinkChoice choose_link(const RunOptions& options) {
-    if (lessons::is_nxt_link(options.link)) {
-        return {std::nullopt,
-                lessons::parse_nxt_target(options.link, options.relay, options.truth_url)};
+    LinkChoice choice;
+    choice.nxt = choose_nxt(options);
+    if (choice.nxt) {
+        return choice;
     }
     if (options.relay || !options.truth_url.empty()) {
         throw InputError(
             {{"", 0, options.relay ? "--relay" : "--truth", options.relay ? "" : options.truth_url,
               "only applies to an NXT link (--link bt:…, serial:… or tcp:…)"}});
     }
-    if (options.link == "lockstep") {
-        return {};
+    if (options.link != "lockstep") {
+        choice.udp =
+            lessons::parse_udp_target(options.link, options.truth_port, options.control_port);
     }
-    return {lessons::parse_udp_target(options.link, options.truth_port, options.control_port),
-            std::nullopt};
+    return choice;
 }
 
 /// What an NXT run adds to the summary: the link's health, and why it ended early if it did.
@@ -95,9 +97,9 @@ class StepCounter final : public lessons::RunObserver {
     std::uint64_t steps = 0;
 };
 
-NxtRunReport run_on_nxt(const lessons::ResolvedRun& run, const lessons::NxtTarget& target,
+NxtRunReport run_on_nxt(const lessons::ResolvedRun& run, const NxtChoice& nxt,
                         lessons::RunObserver& observer, const lessons::ProgressCallback& progress) {
-    const std::unique_ptr<lessons::RobotConnection> connection = lessons::connect_nxt(target);
+    const std::unique_ptr<lessons::RobotConnection> connection = nxt.connect();
     lessons::UnknownTruth unknown;
     TruthSource* truth = connection->truth_source();
     NxtRunReport report;
@@ -116,13 +118,10 @@ NxtRunReport run_on_nxt(const lessons::ResolvedRun& run, const lessons::NxtTarge
     return report;
 }
 
-nlohmann::json nxt_to_json(const LinkChoice& link, const NxtRunReport& report) {
+nlohmann::json nxt_to_json(const NxtChoice& nxt, const NxtRunReport& report) {
     const lessons::LinkHealth& q = report.health;
-    nlohmann::json json = {
-        {"kind", "nxt"},
-        {"address", link.nxt->link.address.to_string()},
-        {"mode", link.nxt->link.mode == comms::nxt::CycleMode::Relay ? "relay" : "direct"},
-        {"truth", link.nxt->truth ? link.nxt->truth->to_string() : "unknown (real robot)"},
+    nlohmann::json json = nxt.to_json();
+    json.update({
         {"cycles", q.frames},
         {"rate_hz", q.rate_hz()},
         {"mean_cycle_s", q.mean_cycle_seconds},
@@ -131,7 +130,7 @@ nlohmann::json nxt_to_json(const LinkChoice& link, const NxtRunReport& report) {
         {"rejected_replies", q.rejected_replies},
         {"invalid_ir_readings", q.invalid_readings},
         {"battery_mv", q.battery_millivolts ? nlohmann::json(*q.battery_millivolts) : nullptr},
-    };
+    });
     if (!report.interrupted.empty()) {
         json["interrupted"] = report.interrupted;
     }
@@ -233,7 +232,7 @@ int run_command(const RunOptions& options) {
             const lessons::RobotProfile profile = lessons::load_robot_profile(options.profile);
             lessons::apply_robot_profile(profile, run.loop);
             if (link.nxt) {
-                lessons::apply_robot_profile(profile, *link.nxt);
+                link.nxt->apply_profile(profile);
             }
             title += " + " + fs::path(options.profile).filename().string();
         }
@@ -290,7 +289,7 @@ int run_command(const RunOptions& options) {
 
         fileio::AtomicFile summary(out / "summary.json");
         nlohmann::json summary_json = lessons::run_summary(run, result, options.experiment, title);
-        summary_json["link"] = nxt ? nxt_to_json(link, *nxt) : link_to_json(link, report);
+        summary_json["link"] = nxt ? nxt_to_json(*link.nxt, *nxt) : link_to_json(link, report);
         const bool interrupted = nxt && !nxt->interrupted.empty();
         if (interrupted) {
             summary_json["interrupted"] = nxt->interrupted;

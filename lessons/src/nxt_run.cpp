@@ -101,10 +101,6 @@ class NxtRobotConnection final : public RobotConnection {
 
 }  // namespace
 
-bool is_nxt_link(const std::string& text) {
-    return text.starts_with("bt:") || text.starts_with("serial:") || text.starts_with("tcp:");
-}
-
 NxtTarget parse_nxt_target(const std::string& link, bool relay, const std::string& truth_url) {
     NxtTarget target;
     try {

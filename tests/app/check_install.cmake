@@ -7,9 +7,12 @@ if(NOT result EQUAL 0)
     message(FATAL_ERROR "cmake --install failed: ${result}")
 endif()
 
-foreach(file bin/legofeup bin/legofeup-cli bin/legofeup-sim bin/legofeup-nxt-emu
-             share/applications/legofeup-lab.desktop
-             share/icons/hicolor/scalable/apps/legofeup-lab.svg)
+set(installed bin/legofeup bin/legofeup-cli bin/legofeup-sim
+    share/applications/legofeup-lab.desktop share/icons/hicolor/scalable/apps/legofeup-lab.svg)
+if(WITH_NXT)
+    list(APPEND installed bin/legofeup-nxt-emu)
+endif()
+foreach(file IN LISTS installed)
     if(NOT EXISTS "${PREFIX}/${file}")
         message(FATAL_ERROR "not installed: ${file}")
     endif()

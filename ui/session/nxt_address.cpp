@@ -5,15 +5,14 @@
 #include <stdexcept>
 
 #include "legofeup/comms/nxt/transport.hpp"
+#include "legofeup/lessons/nxt_link_text.hpp"
 
 namespace legofeup::ui {
 
 QString normalized_nxt_address(const QString& text) {
     const QString trimmed = text.trimmed();
-    for (const char* scheme : {"bt:", "serial:", "tcp:"}) {
-        if (trimmed.startsWith(QLatin1String(scheme))) {
-            return trimmed;
-        }
+    if (lessons::is_nxt_link(trimmed.toStdString())) {
+        return trimmed;
     }
     // Two hex digits then a colon: the start of a Bluetooth address, however it goes on (the
     // parser then says precisely what is wrong with the rest).

@@ -10,12 +10,10 @@
 #include "legofeup/comms/endpoint.hpp"
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/input_error.hpp"
-#include "legofeup/lessons/nxt_run.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/udp_run.hpp"
-#include "legofeup/nxtemu/emulated_nxt.hpp"
 #include "legofeup/simserver/sim_server.hpp"
-#include "legofeup/ui/session/nxt_address.hpp"
+#include "legofeup/ui/session/nxt_connection.hpp"
 #include "legofeup/ui/session/run_samples.hpp"
 #include "legofeup/ui/write_atomically.hpp"
 
@@ -78,7 +76,8 @@ bool Session::running() const {
 
 QStringList Session::setConfig(const lessons::RunConfig& config) {
     try {
-        lessons::ResolvedRun resolved = lessons::resolve(config);
+        // The world and map files are read again only when named anew or changed on disk.
+        lessons::ResolvedRun resolved = lessons::resolve(config, resolved_);
         config_ = config;
         resolved_ = std::move(resolved);
     } catch (const lessons::InputError& error) {
@@ -265,9 +264,6 @@ lessons::ResolvedRun Session::forThisRobot(lessons::ResolvedRun run) const {
 }
 
 std::optional<LiveRun::ConnectionFactory> Session::prepareNxt() {
-    lessons::NxtTarget target;
-    target.link.mode =
-        link_.relay ? comms::nxt::CycleMode::Relay : comms::nxt::CycleMode::DirectCommands;
     if (!link_.robot_profile.isEmpty()) {
         try {
             profile_ = lessons::load_robot_profile(link_.robot_profile.toStdString());
@@ -276,43 +272,14 @@ std::optional<LiveRun::ConnectionFactory> Session::prepareNxt() {
                              .arg(link_.robot_profile, problem_lines(error).join('\n')));
             return std::nullopt;
         }
-        lessons::apply_robot_profile(*profile_, target);  // its wiring and motor constant
     }
-    if (link_.emulated) {
-        if (!startEmulatedNxt(target)) {
-            return std::nullopt;
-        }
-    } else {
-        try {
-            const lessons::NxtTarget typed = lessons::parse_nxt_target(
-                normalized_nxt_address(link_.nxt_address).toStdString(), link_.relay, "");
-            target.link.address = typed.link.address;
-        } catch (const lessons::InputError& error) {
-            emit problem(tr("The NXT's address: %1").arg(problem_lines(error).join('\n')));
-            return std::nullopt;
-        }
+    NxtConnection nxt = prepare_nxt_connection(link_, profile_ ? &*profile_ : nullptr, config_);
+    if (!nxt.connect) {
+        emit problem(nxt.problem);
+        return std::nullopt;
     }
-    return [target]() { return lessons::connect_nxt(target); };
-}
-
-bool Session::startEmulatedNxt(lessons::NxtTarget& target) {
-    const comms::nxt::NxtWiring& wiring = target.link.wiring;
-    nxtemu::EmulatorOptions options;
-    options.run = config_;  // the simulated robot, world, noise and seed of this run
-    options.wiring = {wiring.right_motor, wiring.left_motor, wiring.front_ir, wiring.rear_ir,
-                      wiring.reversed_motors};
-    options.firmware.relay_program = target.link.relay_program;
-    try {
-        emulated_nxt_ = std::make_unique<nxtemu::EmulatedNxt>(std::move(options));
-        const std::uint16_t port = emulated_nxt_->serve_tcp();
-        target.link.address = {comms::nxt::TransportKind::Tcp, "127.0.0.1", port};
-        target.truth = emulated_nxt_->truth_endpoint();
-    } catch (const std::exception& error) {
-        emulated_nxt_.reset();
-        emit problem(tr("The emulated brick did not start: %1").arg(error.what()));
-        return false;
-    }
-    return true;
+    emulated_nxt_ = std::move(nxt.emulated_brick);
+    return std::move(nxt.connect);
 }
 
 void Session::retireRun() {

@@ -4,6 +4,8 @@
 #include <QFileInfo>
 #include <algorithm>
 
+#include "legofeup/ui/session/nxt_connection.hpp"
+
 namespace legofeup::ui {
 
 QString last_config_path() {
@@ -14,6 +16,9 @@ LinkChoice saved_link_choice() {
     LinkChoice choice;
     choice.kind = static_cast<LinkKind>(
         std::clamp(preferences::kLinkKind.read(), 0, static_cast<int>(LinkKind::Nxt)));
+    if (choice.kind == LinkKind::Nxt && !nxt_supported()) {
+        choice.kind = LinkKind::Embedded;  // saved by a build with the NXT
+    }
     choice.address = preferences::kLinkAddress.read();
     // A speed edited by hand into something the simulator refuses: the default instead.
     if (const double speed = preferences::kSimulatorSpeed.read(); is_simulator_speed(speed)) {

@@ -9,8 +9,8 @@
 #include <QToolButton>
 #include <array>
 
+#include "legofeup/ui/session/nxt_connection.hpp"
 #include "legofeup/ui/session/session.hpp"
-#include "legofeup/ui/window/connect_dialog.hpp"
 
 namespace legofeup::ui {
 namespace {
@@ -66,11 +66,13 @@ RunToolBar::RunToolBar(Session& session, QWidget* parent)
     link_->setObjectName(QStringLiteral("linkChoice"));
     link_->addItem(tr("Embedded simulator"));
     link_->addItem(tr("External legofeup-sim"));
-    link_->addItem(tr("NXT over Bluetooth"));
-    link_->setItemData(static_cast<int>(LinkKind::Nxt),
-                       tr("A LEGO NXT over Bluetooth, a serial port or TCP, or an emulated brick "
-                          "to rehearse with: opens the connect dialog"),
-                       Qt::ToolTipRole);
+    if (nxt_supported()) {  // a build without the NXT offers none
+        link_->addItem(tr("NXT over Bluetooth"));
+        link_->setItemData(static_cast<int>(LinkKind::Nxt),
+                           tr("A LEGO NXT over Bluetooth, a serial port or TCP, or an emulated "
+                              "brick to rehearse with: opens the connect dialog"),
+                           Qt::ToolTipRole);
+    }
     link_->setCurrentIndex(static_cast<int>(session_.linkChoice().kind));
     addWidget(link_);
     address_ = new QLineEdit(session_.linkChoice().address, this);
@@ -91,6 +93,7 @@ RunToolBar::RunToolBar(Session& session, QWidget* parent)
     connect_->setToolTip(
         tr("Choose the NXT: its address, the relay program, a robot profile, "
            "or an emulated brick"));
+    connect_->setVisible(nxt_supported());  // in the Run and Tools menus
     connect(connect_, &QAction::triggered, this, &RunToolBar::openConnectDialog);
     nxt_ = new QToolButton(this);
     nxt_->setObjectName(QStringLiteral("nxtButton"));
@@ -123,7 +126,10 @@ void RunToolBar::addRunAction(QAction* action) {
 
 void RunToolBar::linkEdited() {
     LinkChoice choice = session_.linkChoice();  // keeps the NXT's fields
-    choice.kind = static_cast<LinkKind>(link_->currentIndex());
+    // No entry is current for an NXT chosen in a build without the NXT: it stays chosen.
+    if (link_->currentIndex() >= 0) {
+        choice.kind = static_cast<LinkKind>(link_->currentIndex());
+    }
     choice.address = address_->text().trimmed();
     choice.speed = speed_->currentData().toDouble();
     session_.setLinkChoice(choice);
@@ -159,18 +165,6 @@ void RunToolBar::showLinkFields() {
     nxt_->setText(choice.emulated                ? tr("Emulated brick…")
                   : choice.nxt_address.isEmpty() ? tr("Choose the NXT…")
                                                  : choice.nxt_address + QStringLiteral(" …"));
-}
-
-ConnectDialog* RunToolBar::openConnectDialog() {
-    auto* dialog = new ConnectDialog(session_.linkChoice(), window());
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QDialog::accepted, this, [this, dialog] {
-        session_.setLinkChoice(dialog->choice());
-        showLinkFields();
-    });
-    connect(dialog, &QDialog::rejected, this, [this] { showLinkFields(); });
-    dialog->open();
-    return dialog;
 }
 
 void RunToolBar::phaseChanged(RunPhase phase) {

@@ -9,6 +9,7 @@
 
 #include "legofeup/comms/endpoint.hpp"
 #include "legofeup/comms/nxt/nxt_link.hpp"
+#include "legofeup/lessons/nxt_link_text.hpp"  // is_nxt_link
 #include "legofeup/lessons/robot_connection.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/run_config.hpp"
@@ -20,9 +21,6 @@ struct NxtTarget {
     /// An emulated brick's ground truth (its simulator's truth port); unset for a real robot.
     std::optional<comms::Endpoint> truth;
 };
-
-/// True for the link texts that name an NXT ("bt:", "serial:", "tcp:").
-bool is_nxt_link(const std::string& text);
 
 /// The target for `--link TEXT [--relay] [--truth udp://HOST:PORT]`. Throws InputError naming
 /// the option and the value.

@@ -20,7 +20,6 @@
 #include <memory>
 
 #include "legofeup/lessons/config_schema.hpp"
-#include "legofeup/lessons/nxt_run.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/run_config.hpp"
@@ -31,11 +30,10 @@
 namespace legofeup::simserver {
 class SimServer;
 }
-namespace legofeup::nxtemu {
-class EmulatedNxt;
-}
 
 namespace legofeup::ui {
+
+class EmulatedBrick;
 
 /// Where the robot is: the simulator inside the application, a legofeup-sim elsewhere, or
 /// a LEGO NXT (over Bluetooth, a serial port or TCP; or an emulated brick in the application).
@@ -154,10 +152,9 @@ class Session : public QObject {
     /// How the next run takes its robot (starting the embedded simulator or the emulated
     /// brick first); nullopt after emitting problem().
     std::optional<LiveRun::ConnectionFactory> prepareConnection();
+    /// The NXT's (nxt_connection.hpp), with its robot profile: the brick at the address typed,
+    /// or an emulated brick on this run's simulator, started first.
     std::optional<LiveRun::ConnectionFactory> prepareNxt();
-    /// Starts an emulated brick on this run's simulator, on a free loopback TCP port, and
-    /// points `target` at it (and its truth). False after emitting problem().
-    bool startEmulatedNxt(lessons::NxtTarget& target);
     /// `run` with the NXT run's robot profile applied to the filter (as it is without one).
     lessons::ResolvedRun forThisRobot(lessons::ResolvedRun run) const;
     /// Starts recording this run into the recording folder (a RunRecorder of its own).
@@ -177,7 +174,7 @@ class Session : public QObject {
     RunHistory history_;
 
     std::unique_ptr<simserver::SimServer> embedded_;
-    std::unique_ptr<nxtemu::EmulatedNxt> emulated_nxt_;
+    std::unique_ptr<EmulatedBrick> emulated_nxt_;
     std::optional<lessons::RobotProfile> profile_;  ///< the NXT run's robot profile, if any
     std::unique_ptr<LiveRun> run_;
     std::vector<std::future<void>> reapers_;  ///< retired runs being stopped and joined

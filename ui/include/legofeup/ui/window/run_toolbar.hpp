@@ -33,14 +33,15 @@ class RunToolBar : public QToolBar {
     QCheckBox* pathControllerSwitch() const { return path_controller_; }
     /// Shows the NXT chosen (its address, or "emulated brick"); opens the connect dialog.
     QToolButton* nxtButton() const { return nxt_; }
-    /// "Connect to an NXT…": opens the connect dialog.
+    /// "Connect to an NXT…": opens the connect dialog (hidden in a build without the NXT).
     QAction* connectAction() const { return connect_; }
     /// Puts `action` with the run's controls, after Reset (Kidnap robot…).
     void addRunAction(QAction* action);
 
   public slots:
     /// Opens the connect dialog (window-modal, not blocking); accepting it makes the NXT the
-    /// robot of the next start, cancelling keeps the robot chosen before. Returns it.
+    /// robot of the next start, cancelling keeps the robot chosen before. Returns it; null in
+    /// a build without the NXT (nxt_supported()), which has no dialog and offers no NXT.
     ConnectDialog* openConnectDialog();
 
   private:
