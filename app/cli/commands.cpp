@@ -16,15 +16,15 @@
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/experiments.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/link_run.hpp"
+#include "legofeup/lessons/links/link_registry.hpp"
 #include "legofeup/lessons/lockstep_run.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/run_summary.hpp"
 #include "legofeup/lessons/trace_csv.hpp"
-#include "legofeup/lessons/udp_run.hpp"
 #include "legofeup/report/run_plots.hpp"
 #include "legofeup/version.hpp"
-#include "nxt_choice.hpp"
 #include "output_directory.hpp"
 #include "progress_bar.hpp"
 
@@ -49,41 +49,29 @@ class Observers final : public lessons::RunObserver {
     std::vector<lessons::RunObserver*> observers_;
 };
 
-/// The link a run uses: the deterministic in-process simulator, a server over UDP, or an NXT.
-struct LinkChoice {
-    std::optional<lessons::UdpTarget> udp;  ///< both unset: lockstep
-    std::unique_ptr<NxtChoice> nxt;
-
-    std::string describe() const {
-        if (nxt) {
-            return nxt->address();
-        }
-        return udp ? "udp://" + udp->robot.to_string() : "lockstep";
-    }
-};
-
-LinkChoice choose_link(const RunOptions& options) {
-    LinkChoice choice;
-    choice.nxt = choose_nxt(options);
-    if (choice.nxt) {
-        return choice;
-    }
-    if (options.relay || !options.truth_url.empty()) {
-        throw InputError(
-            {{"", 0, options.relay ? "--relay" : "--truth", options.relay ? "" : options.truth_url,
-              "only applies to an NXT link (--link bt:…, serial:… or tcp:…)"}});
-    }
-    if (options.link != "lockstep") {
-        choice.udp =
-            lessons::parse_udp_target(options.link, options.truth_port, options.control_port);
-    }
-    return choice;
+/// The run's link from the registry (lessons/links/link_registry.hpp): null for lockstep,
+/// the deterministic in-process simulator. Throws InputError naming the option.
+std::unique_ptr<lessons::LinkPlan> plan_link(const RunOptions& options) {
+    lessons::LinkRequest request;
+    request.address = options.link;
+    request.relay = options.relay;
+    request.truth_url = options.truth_url;
+    request.truth_port = options.truth_port;
+    request.control_port = options.control_port;
+    return lessons::plan_link(request);
 }
 
-/// What an NXT run adds to the summary: the link's health, and why it ended early if it did.
-struct NxtRunReport {
+std::string describe(const lessons::LinkPlan* link) {
+    return link != nullptr ? link->describe() : std::string(lessons::kLockstepLink);
+}
+
+/// A run over a link: its result, what the connection says of itself, and why it ended
+/// early if it did.
+struct LinkRunReport {
     lessons::RunResult result;
+    nlohmann::json link;  ///< RobotConnection::summary(): summary.json's "link"
     lessons::LinkHealth health;
+    lessons::LinkCapabilities capabilities;
     bool truth_known = false;
     std::string interrupted;  ///< the link failure that ended the run (empty: it did not)
 };
@@ -97,13 +85,17 @@ class StepCounter final : public lessons::RunObserver {
     std::uint64_t steps = 0;
 };
 
-NxtRunReport run_on_nxt(const lessons::ResolvedRun& run, const NxtChoice& nxt,
-                        lessons::RunObserver& observer, const lessons::ProgressCallback& progress) {
-    const std::unique_ptr<lessons::RobotConnection> connection = nxt.connect();
+/// Connects (a failure to connect throws comms::LinkError: nothing was run) and runs; a link
+/// that fails mid-run ends the run, and what was recorded so far is kept.
+LinkRunReport run_on_link(const lessons::ResolvedRun& run, const lessons::LinkPlan& plan,
+                          lessons::RunObserver& observer,
+                          const lessons::ProgressCallback& progress) {
+    const std::unique_ptr<lessons::RobotConnection> connection = plan.connect(run);
     lessons::UnknownTruth unknown;
     TruthSource* truth = connection->truth_source();
-    NxtRunReport report;
+    LinkRunReport report;
     report.truth_known = truth != nullptr;
+    report.capabilities = connection->capabilities();
     try {
         report.result =
             lessons::run_with_link(run, connection->robot_link(),
@@ -115,32 +107,17 @@ NxtRunReport run_on_nxt(const lessons::ResolvedRun& run, const NxtChoice& nxt,
     }
     connection->close();
     report.health = connection->health();
+    report.link = connection->summary();
+    if (!report.interrupted.empty()) {
+        report.link["interrupted"] = report.interrupted;
+    }
     return report;
 }
 
-nlohmann::json nxt_to_json(const NxtChoice& nxt, const NxtRunReport& report) {
-    const lessons::LinkHealth& q = report.health;
-    nlohmann::json json = nxt.to_json();
-    json.update({
-        {"cycles", q.frames},
-        {"rate_hz", q.rate_hz()},
-        {"mean_cycle_s", q.mean_cycle_seconds},
-        {"max_cycle_s", q.max_cycle_seconds},
-        {"timeouts", q.timeouts},
-        {"rejected_replies", q.rejected_replies},
-        {"invalid_ir_readings", q.invalid_readings},
-        {"battery_mv", q.battery_millivolts ? nlohmann::json(*q.battery_millivolts) : nullptr},
-    });
-    if (!report.interrupted.empty()) {
-        json["interrupted"] = report.interrupted;
-    }
-    return json;
-}
-
-void print_nxt_link(const NxtRunReport& report) {
-    const lessons::LinkHealth& q = report.health;
+/// A robot's own cycle and battery (an NXT's), when the connection reports them.
+void print_robot_health(const lessons::LinkHealth& q) {
     std::printf(
-        "  NXT link: %llu cycles at %.1f Hz (mean %.1f ms, max %.1f ms), %llu timeouts, "
+        "  robot link: %llu cycles at %.1f Hz (mean %.1f ms, max %.1f ms), %llu timeouts, "
         "%llu rejected replies",
         static_cast<unsigned long long>(q.frames), q.rate_hz(), 1e3 * q.mean_cycle_seconds,
         1e3 * q.max_cycle_seconds, static_cast<unsigned long long>(q.timeouts),
@@ -149,27 +126,6 @@ void print_nxt_link(const NxtRunReport& report) {
         std::printf(", battery %.2f V", *q.battery_millivolts / 1000.0);
     }
     std::printf("\n");
-}
-
-nlohmann::json link_to_json(const LinkChoice& link, const lessons::UdpRunReport& report) {
-    if (!link.udp) {
-        return {{"kind", "lockstep"}};
-    }
-    const comms::ServerCounters& c = report.server.counters;
-    return {
-        {"kind", "udp"},
-        {"robot", link.udp->robot.to_string()},
-        {"truth", link.udp->truth.to_string()},
-        {"control", link.udp->control.to_string()},
-        {"frames_received", report.link.frames.accepted},
-        {"frames_duplicate", report.link.frames.duplicate},
-        {"frames_late", report.link.frames.late},
-        {"frame_timeouts", report.link.timeouts},
-        {"server_time_scale", report.server.time_scale},
-        {"server_commands_accepted", c.commands_accepted},
-        {"server_commands_missing", c.commands_missing},
-        {"server_overruns", c.overruns},
-    };
 }
 
 void print_summary(const lessons::ResolvedRun& run, const lessons::RunResult& result,
@@ -224,15 +180,15 @@ void print_summary(const lessons::ResolvedRun& run, const lessons::RunResult& re
 int run_command(const RunOptions& options) {
     std::string title;
     lessons::ResolvedRun run;
-    LinkChoice link;
+    std::unique_ptr<lessons::LinkPlan> link;
     try {
         run = lessons::resolve(compose_cli_config(options, title));
-        link = choose_link(options);
+        link = plan_link(options);
         if (!options.profile.empty()) {
             const lessons::RobotProfile profile = lessons::load_robot_profile(options.profile);
             lessons::apply_robot_profile(profile, run.loop);
-            if (link.nxt) {
-                link.nxt->apply_profile(profile);
+            if (link) {
+                link->apply_profile(profile);  // an NXT's wiring; a simulator has none
             }
             title += " + " + fs::path(options.profile).filename().string();
         }
@@ -266,21 +222,18 @@ int run_command(const RunOptions& options) {
         if (!options.record_file.empty()) {
             lessons::RunLogWriter::Options log_options;
             log_options.program = std::string("legofeup-cli ") + kVersion;
-            log_options.link = link.describe();
+            log_options.link = describe(link.get());
             run_log.emplace(options.record_file, run, title, std::move(log_options));
             observers.add(*run_log);
         }
-        lessons::UdpRunReport report;
-        std::optional<NxtRunReport> nxt;
-        if (link.nxt) {
-            nxt = run_on_nxt(run, *link.nxt, observers, show_progress);
-            report.result = nxt->result;
-        } else if (link.udp) {
-            report = lessons::run_over_udp(run, *link.udp, &observers, show_progress);
+        std::optional<LinkRunReport> over_link;
+        lessons::RunResult result;
+        if (link) {
+            over_link = run_on_link(run, *link, observers, show_progress);
+            result = over_link->result;
         } else {
-            report.result = lessons::run_lockstep(run, &observers, show_progress);
+            result = lessons::run_lockstep(run, &observers, show_progress);
         }
-        const lessons::RunResult& result = report.result;
         progress.finish();
         trace.commit();
         if (run_log) {
@@ -289,31 +242,34 @@ int run_command(const RunOptions& options) {
 
         fileio::AtomicFile summary(out / "summary.json");
         nlohmann::json summary_json = lessons::run_summary(run, result, options.experiment, title);
-        summary_json["link"] = nxt ? nxt_to_json(*link.nxt, *nxt) : link_to_json(link, report);
-        const bool interrupted = nxt && !nxt->interrupted.empty();
+        summary_json["link"] =
+            over_link ? over_link->link : nlohmann::json{{"kind", lessons::kLockstepLink}};
+        const bool interrupted = over_link && !over_link->interrupted.empty();
         if (interrupted) {
-            summary_json["interrupted"] = nxt->interrupted;
+            summary_json["interrupted"] = over_link->interrupted;
             summary_json["steps_recorded"] = steps.steps;
         }
         summary.stream() << summary_json.dump(2) << '\n';
         summary.commit();
         // Plots compare the estimate with the truth: a real robot has none.
-        const bool plots = options.plots && !(nxt && !nxt->truth_known);
+        const bool plots = options.plots && !(over_link && !over_link->truth_known);
         if (plots) {
             report::write_run_plots(recording, run.world, out, "LegoFeup " + title);
         }
         if (interrupted) {
-            std::cerr << "error: the run on " << link.describe() << " stopped after " << steps.steps
-                      << " steps: " << nxt->interrupted
-                      << "\nA stop was sent to the motors as far as the link still carried it: "
-                         "check the robot. "
+            std::cerr << "error: the run on " << describe(link.get()) << " stopped after "
+                      << steps.steps << " steps: " << over_link->interrupted << '\n'
+                      << (over_link->capabilities.robot_health
+                              ? "A stop was sent to the motors as far as the link still "
+                                "carried it: check the robot. "
+                              : "Is the simulator still running? ")
                       << out.string() << "/trace.csv and summary.json keep what was recorded.\n";
             return kExitLinkFailed;
         }
         if (!options.quiet) {
-            print_summary(run, result, title, link.describe());
-            if (nxt) {
-                print_nxt_link(*nxt);
+            print_summary(run, result, title, describe(link.get()));
+            if (over_link && over_link->capabilities.robot_health) {
+                print_robot_health(over_link->health);
             }
             std::printf("Results in %s: trace.csv, summary.json%s\n", out.string().c_str(),
                         plots ? ", trajectory, errors, covariance, ir_distances and "
@@ -322,14 +278,6 @@ int run_command(const RunOptions& options) {
         }
     } catch (const comms::LinkError& failure) {
         std::cerr << "error: " << failure.what() << '\n';
-        return kExitLinkFailed;
-    } catch (const lessons::LinkSilent& failure) {
-        std::cerr << "error: " << failure.what() << " from " << link.describe()
-                  << " (did legofeup-sim stop?); nothing was written"
-                  << (options.record_file.empty()
-                          ? std::string()
-                          : " but the run log " + options.record_file + " (steps so far)")
-                  << '\n';
         return kExitLinkFailed;
     } catch (const std::exception& failure) {
         std::cerr << "error: " << failure.what() << '\n';

@@ -7,6 +7,7 @@
 #include "calibrate_commands.hpp"
 #include "commands.hpp"
 #include "grade_command.hpp"
+#include "legofeup/lessons/links/link_registry.hpp"
 #include "legofeup/version.hpp"
 #include "lesson_commands.hpp"
 #include "measure_ir_command.hpp"
@@ -29,9 +30,8 @@ int main(int argc, char** argv) {
     run->add_flag("!--no-plots", options.plots, "Skip the PNG and SVG plots");
     run->add_flag("--quiet,-q", options.quiet, "Print nothing on success");
     run->add_option("--link", options.link,
-                    "lockstep (the in-process simulator, deterministic), udp://HOST:PORT (a "
-                    "running legofeup-sim, docs/protocol.md), or an NXT: bt:XX:XX:XX:XX:XX:XX, "
-                    "serial:/dev/rfcomm0 or tcp:HOST:PORT (docs/nxt.md)");
+                    "Where the robot is, one of: " + legofeup::lessons::link_forms()
+                        + " (docs/protocol.md, docs/nxt.md)");
     run->add_flag("--relay", options.relay,
                   "NXT: read the brick through the relay program legofeup.rxe (docs/nxt.md)");
     run->add_option("--profile", options.profile,

@@ -60,7 +60,7 @@ LinkHealth health_of(const comms::nxt::LinkQuality& quality,
 
 class NxtRobotConnection final : public RobotConnection {
   public:
-    explicit NxtRobotConnection(const NxtTarget& target) : link_(target.link) {
+    explicit NxtRobotConnection(const NxtTarget& target) : target_(target), link_(target.link) {
         if (target.truth) {
             truth_.emplace(*target.truth);
         }
@@ -72,7 +72,7 @@ class NxtRobotConnection final : public RobotConnection {
 
     RobotLink& robot_link() override { return link_; }
     TruthSource* truth_source() override { return truth_ ? &*truth_ : nullptr; }
-    void set_noise(const sim::RobotSpec& /*robot*/) override {}
+    void set_noise(const RobotNoise& /*noise*/) override {}
     void set_paused(bool paused) override { link_.set_paused(paused); }
     std::string teleport(const Pose2& /*pose*/) override {
         return describe() + " is not a simulator";
@@ -93,8 +93,29 @@ class NxtRobotConnection final : public RobotConnection {
         return can;
     }
     LinkHealth health() const override { return health_of(link_.quality(), link_.options()); }
+    /// kind "nxt", the address, the cycle mode, the truth, the cycle's timing and counters
+    /// and the battery.
+    nlohmann::json summary() override {
+        const LinkHealth q = health();
+        nlohmann::json json = {
+            {"kind", "nxt"},
+            {"address", link_.options().address.to_string()},
+            {"mode", link_.options().mode == comms::nxt::CycleMode::Relay ? "relay" : "direct"},
+            {"truth", target_.truth ? target_.truth->to_string() : "unknown (real robot)"},
+            {"cycles", q.frames},
+            {"rate_hz", q.rate_hz()},
+            {"mean_cycle_s", q.mean_cycle_seconds},
+            {"max_cycle_s", q.max_cycle_seconds},
+            {"timeouts", q.timeouts},
+            {"rejected_replies", q.rejected_replies},
+            {"invalid_ir_readings", q.invalid_readings},
+            {"battery_mv", q.battery_millivolts ? nlohmann::json(*q.battery_millivolts) : nullptr},
+        };
+        return json;
+    }
 
   private:
+    NxtTarget target_;
     std::optional<LatestTruth> truth_;
     comms::nxt::NxtLink link_;
 };

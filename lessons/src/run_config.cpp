@@ -115,6 +115,10 @@ void check_laser_beams(const RunConfig& config, ConfigChecker& check) {
 
 }  // namespace
 
+RobotNoise robot_noise(const sim::RobotSpec& robot) {
+    return {robot.wheel_diameter_ratio, robot.wheel_base_ratio, robot.slip_noise, robot.ir_noise};
+}
+
 std::optional<FileStamp> stamp_of(const std::string& path) {
     std::error_code error;
     const std::filesystem::path file(path);

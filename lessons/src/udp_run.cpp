@@ -33,19 +33,20 @@ comms::UdpLinkOptions link_options(const UdpTarget& target) {
 
 }  // namespace
 
-comms::NoiseSettings noise_settings_of(const sim::RobotSpec& robot) {
-    return {robot.wheel_diameter_ratio, robot.wheel_base_ratio, robot.slip_noise, robot.ir_noise};
+comms::NoiseSettings noise_settings_of(const RobotNoise& noise) {
+    return {noise.wheel_diameter_ratio, noise.wheel_base_ratio, noise.slip_noise, noise.ir_noise};
 }
 
 // The truth receiver subscribes in its constructor, before the reset below, so the truth of
 // time 0 is not missed.
 UdpRobotConnection::UdpRobotConnection(const ResolvedRun& run, const UdpTarget& target)
-    : robot_(target.robot),
+    : target_(target),
+      robot_(target.robot),
       control_(target.control),
       truth_(target.truth),
       link_(link_options(target)) {
     check_control_period(control_, run, target);
-    control_.set_noise(noise_settings_of(run.robot));
+    control_.set_noise(noise_settings_of(robot_noise(run.robot)));
     link_.connect();
     control_.reset(run.config.seed, run.true_start);
     if (!link_.await_reset(2s)) {
@@ -58,8 +59,8 @@ UdpRobotConnection::~UdpRobotConnection() {
     close();
 }
 
-void UdpRobotConnection::set_noise(const sim::RobotSpec& robot) {
-    control_.set_noise(noise_settings_of(robot));
+void UdpRobotConnection::set_noise(const RobotNoise& noise) {
+    control_.set_noise(noise_settings_of(noise));
 }
 
 void UdpRobotConnection::set_paused(bool paused) {
@@ -86,6 +87,32 @@ LinkHealth UdpRobotConnection::health() const {
     health.timeouts = counters.timeouts;
     health.rejected_replies = counters.malformed;
     return health;
+}
+
+nlohmann::json UdpRobotConnection::summary() {
+    const comms::LinkCounters counters = link_.counters();
+    nlohmann::json json = {
+        {"kind", "udp"},
+        {"robot", target_.robot.to_string()},
+        {"truth", target_.truth.to_string()},
+        {"control", target_.control.to_string()},
+        {"frames_received", counters.frames.accepted},
+        {"frames_duplicate", counters.frames.duplicate},
+        {"frames_late", counters.frames.late},
+        {"frame_timeouts", counters.timeouts},
+    };
+    try {
+        const comms::ServerStatus server = control_.status();
+        json.update({
+            {"server_time_scale", server.time_scale},
+            {"server_commands_accepted", server.counters.commands_accepted},
+            {"server_commands_missing", server.counters.commands_missing},
+            {"server_overruns", server.counters.overruns},
+        });
+    } catch (const comms::LinkError& silent) {  // a server that stopped keeps its counters
+        json["server_status"] = std::string("no answer: ") + silent.what();
+    }
+    return json;
 }
 
 UdpTarget parse_udp_target(const std::string& url, int truth_port, int control_port) {

@@ -52,7 +52,7 @@ class NxtCli : public legofeup::testing::ProgramTest {
             LEGOFEUP_CLI, "run -e f --laps 1 --seed 3 --no-plots -o " + (dir_ / "out").string()
                               + " --link " + link + " --truth " + truth + " " + extra);
         ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
-        EXPECT_NE(run.out.find("NXT link:"), std::string::npos) << run.out;
+        EXPECT_NE(run.out.find("robot link:"), std::string::npos) << run.out;
         const nlohmann::json s = summary("out");
         const nlohmann::json& m = s["metrics"];
         EXPECT_TRUE(m["routine_finished"].get<bool>()) << m.dump(2);

@@ -2,6 +2,7 @@
 // standalone server gives the lockstep run's results; bad input gets a precise message.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -28,12 +29,12 @@ class SimCli : public legofeup::testing::ProgramTest {
 
     /// Starts legofeup-sim in the background on free ports; returns the legofeup-cli
     /// options that reach it (empty if it did not start).
-    std::string start_server(const std::string& arguments) {
+    std::string start_server(const std::string& arguments, int duration_seconds = 60) {
         const fs::path ready = dir_ / "ready";
-        start_in_background(
-            LEGOFEUP_SIM,
-            "--port 0 --ready-file " + ready.string() + " --duration 60 --quiet " + arguments,
-            "sim");
+        start_in_background(LEGOFEUP_SIM,
+                            "--port 0 --ready-file " + ready.string() + " --duration "
+                                + std::to_string(duration_seconds) + " --quiet " + arguments,
+                            "sim");
         wait_for_file(ready, 5s);
         std::istringstream ports(read_file(ready));
         std::string robot, truth, control;
@@ -132,6 +133,28 @@ TEST_F(SimCli, ServerRefusesBadOptionsWithAPreciseMessage) {
         run(LEGOFEUP_SIM, "--duration 1 --port " + std::to_string(taken.local_endpoint().port));
     EXPECT_EQ(busy.exit_code, 1);
     EXPECT_NE(busy.err.find("Address already in use"), std::string::npos) << busy.err;
+}
+
+// The server stops 3 s into a 2-minute lap: the run ends, says why, and keeps what it had
+// recorded (the trace's rows are the steps summary.json says were recorded), as a run whose
+// NXT loses its link does (test_nxt_cli.cpp).
+TEST_F(SimCli, AServerThatStopsMidRunEndsTheRunAndWhatWasRecordedIsKept) {
+    const std::string link = start_server("--time-scale 1", 3);
+    ASSERT_FALSE(link.empty());
+    const Result cut = run(
+        LEGOFEUP_CLI, "run -e f --laps 1 --no-plots " + link + " -o " + (dir_ / "cut").string());
+    EXPECT_EQ(cut.exit_code, 3) << cut.err;
+    EXPECT_NE(cut.err.find("stopped after"), std::string::npos) << cut.err;
+    EXPECT_NE(cut.err.find("delivered no frame"), std::string::npos) << cut.err;
+    EXPECT_NE(cut.err.find("Is the simulator still running?"), std::string::npos) << cut.err;
+    const std::string trace = read_file(dir_ / "cut" / "trace.csv");
+    const auto rows = std::count(trace.begin(), trace.end(), '\n') - 1;
+    EXPECT_GT(rows, 20) << trace.substr(0, 300);  // 3 s at 20 steps a second, less a start
+    const std::string summary = read_file(dir_ / "cut" / "summary.json");
+    EXPECT_NE(summary.find("\"steps_recorded\": " + std::to_string(rows)), std::string::npos)
+        << summary;
+    EXPECT_NE(summary.find("\"kind\": \"udp\""), std::string::npos) << summary;
+    EXPECT_NE(summary.find("\"routine_finished\": false"), std::string::npos) << summary;
 }
 
 TEST_F(SimCli, ServerPrintsWhereItListensAndStopsAfterItsDuration) {

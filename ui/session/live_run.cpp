@@ -6,7 +6,6 @@
 
 #include "legofeup/comms/link_error.hpp"
 #include "legofeup/lessons/link_run.hpp"
-#include "legofeup/lessons/udp_run.hpp"  // noise_settings_of
 #include "legofeup/ui/session/run_samples.hpp"
 
 namespace legofeup::ui {
@@ -130,10 +129,9 @@ void LiveRun::apply(Requests requests, LegoFeupLoop& loop, lessons::RobotConnect
     if (requests.run) {
         // Validated by the session already: reconfigure() cannot refuse it.
         loop.reconfigure(requests.run->loop);
-        if (lessons::noise_settings_of(requests.run->robot)
-            != lessons::noise_settings_of(run_.robot)) {
+        if (lessons::robot_noise(requests.run->robot) != lessons::robot_noise(run_.robot)) {
             if (connection.capabilities().live_noise) {  // a real robot has no noise to set
-                connection.set_noise(requests.run->robot);
+                connection.set_noise(lessons::robot_noise(requests.run->robot));
             }
         }
         run_ = std::move(*requests.run);

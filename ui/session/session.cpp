@@ -10,8 +10,8 @@
 #include "legofeup/comms/endpoint.hpp"
 #include "legofeup/lessons/config_file.hpp"
 #include "legofeup/lessons/input_error.hpp"
+#include "legofeup/lessons/links/link_registry.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
-#include "legofeup/lessons/udp_run.hpp"
 #include "legofeup/simserver/sim_server.hpp"
 #include "legofeup/ui/session/nxt_connection.hpp"
 #include "legofeup/ui/session/run_samples.hpp"
@@ -221,39 +221,55 @@ std::optional<LiveRun::ConnectionFactory> Session::prepareConnection() {
     embedded_.reset();
     emulated_nxt_.reset();
     profile_.reset();
+    // Every robot is a link of the registry (lessons/links/link_registry.hpp); the embedded
+    // simulator is a simulator server like any other, on this run's loopback ports.
+    std::unique_ptr<lessons::LinkPlan> plan;
     if (link_.kind == LinkKind::Nxt) {
-        return prepareNxt();
-    }
-    lessons::UdpTarget target;
-    if (link_.kind == LinkKind::External) {
-        try {
-            target = lessons::parse_udp_target(link_.address.toStdString(), 0, 0);
-        } catch (const lessons::InputError& error) {
-            emit problem(problem_lines(error).join('\n'));
-            return std::nullopt;
-        }
+        plan = prepareNxt();
+    } else if (link_.kind == LinkKind::External) {
+        lessons::LinkRequest request;
+        request.address = link_.address.toStdString();
+        plan = planLink(request);
     } else {
-        // The embedded simulator: a fresh server per run, on free loopback ports, so it
-        // always has this run's world, robot and timing.
-        simserver::SimServerOptions options;
-        options.bind = comms::Endpoint{comms::kLoopbackAddress, 0};
-        options.time_scale = link_.speed;
-        try {
-            embedded_ = std::make_unique<simserver::SimServer>(resolved_.world, resolved_.robot,
-                                                               resolved_.config.simulator,
-                                                               resolved_.config.seed, options);
-        } catch (const std::exception& error) {
-            emit problem(tr("The embedded simulator did not start: %1").arg(error.what()));
-            return std::nullopt;
-        }
-        embedded_->start();
-        const simserver::BoundPorts ports = embedded_->ports();
-        target = {options.bind.with_port(ports.robot), options.bind.with_port(ports.truth),
-                  options.bind.with_port(ports.control)};
+        plan = startEmbeddedSimulator();
     }
-    return [run = resolved_, target]() -> std::unique_ptr<lessons::RobotConnection> {
-        return std::make_unique<lessons::UdpRobotConnection>(run, target);
-    };
+    if (!plan) {
+        return std::nullopt;
+    }
+    return [run = forThisRobot(resolved_), plan = std::shared_ptr<const lessons::LinkPlan>(
+                                               std::move(plan))] { return plan->connect(run); };
+}
+
+std::unique_ptr<lessons::LinkPlan> Session::planLink(const lessons::LinkRequest& request) {
+    try {
+        return lessons::plan_link(request);
+    } catch (const lessons::InputError& error) {
+        emit problem(problem_lines(error).join('\n'));
+        return nullptr;
+    }
+}
+
+std::unique_ptr<lessons::LinkPlan> Session::startEmbeddedSimulator() {
+    // A fresh server per run, on free loopback ports, so it always has this run's world,
+    // robot and timing.
+    simserver::SimServerOptions options;
+    options.bind = comms::Endpoint{comms::kLoopbackAddress, 0};
+    options.time_scale = link_.speed;
+    try {
+        embedded_ = std::make_unique<simserver::SimServer>(resolved_.world, resolved_.robot,
+                                                           resolved_.config.simulator,
+                                                           resolved_.config.seed, options);
+    } catch (const std::exception& error) {
+        emit problem(tr("The embedded simulator did not start: %1").arg(error.what()));
+        return nullptr;
+    }
+    embedded_->start();
+    const simserver::BoundPorts ports = embedded_->ports();
+    lessons::LinkRequest request;
+    request.address = "udp://" + options.bind.with_port(ports.robot).to_string();
+    request.truth_port = ports.truth;
+    request.control_port = ports.control;
+    return planLink(request);
 }
 
 lessons::ResolvedRun Session::forThisRobot(lessons::ResolvedRun run) const {
@@ -263,23 +279,23 @@ lessons::ResolvedRun Session::forThisRobot(lessons::ResolvedRun run) const {
     return run;
 }
 
-std::optional<LiveRun::ConnectionFactory> Session::prepareNxt() {
+std::unique_ptr<lessons::LinkPlan> Session::prepareNxt() {
     if (!link_.robot_profile.isEmpty()) {
         try {
             profile_ = lessons::load_robot_profile(link_.robot_profile.toStdString());
         } catch (const lessons::InputError& error) {
             emit problem(tr("The robot profile %1 did not load:\n%2")
                              .arg(link_.robot_profile, problem_lines(error).join('\n')));
-            return std::nullopt;
+            return nullptr;
         }
     }
     NxtConnection nxt = prepare_nxt_connection(link_, profile_ ? &*profile_ : nullptr, config_);
-    if (!nxt.connect) {
+    if (!nxt.plan) {
         emit problem(nxt.problem);
-        return std::nullopt;
+        return nullptr;
     }
     emulated_nxt_ = std::move(nxt.emulated_brick);
-    return std::move(nxt.connect);
+    return std::move(nxt.plan);
 }
 
 void Session::retireRun() {

@@ -21,6 +21,18 @@ struct LinkCapabilities {
     bool robot_health = false;
 };
 
+/// A simulated robot's noise, as a link with live noise takes it while it runs: the
+/// odometry's systematic errors E_d and E_b (paper 000 eq. 6), the slip, and the IR sensors'
+/// σ (docs/simulator.md). A real robot has its own and takes none.
+struct RobotNoise {
+    double wheel_diameter_ratio = 1.0;  ///< E_d
+    double wheel_base_ratio = 1.0;      ///< E_b
+    double slip_noise = 0.0;            ///< m^½
+    double ir_noise = 0.0;              ///< σ of each IR distance, m
+
+    friend bool operator==(const RobotNoise&, const RobotNoise&) = default;
+};
+
 enum class LinkState : std::uint8_t { Disconnected, Connecting, Connected, Failed };
 
 /// How a link is doing: its state, where it goes, its counters and, where there is one,

@@ -6,13 +6,13 @@
 // decide from the kind of link.
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
 #include "legofeup/core/robot_link.hpp"
 #include "legofeup/core/truth_source.hpp"
 #include "legofeup/lessons/link_health.hpp"
-#include "legofeup/sim/robot_spec.hpp"
 
 namespace legofeup::lessons {
 
@@ -25,7 +25,7 @@ class RobotConnection {
     /// Where the ground truth comes from; nullptr for a real robot (nobody knows its pose).
     virtual TruthSource* truth_source() = 0;
     /// A simulated robot's noise (E_d, E_b, slip, IR), live. A real robot ignores it.
-    virtual void set_noise(const sim::RobotSpec& robot) = 0;
+    virtual void set_noise(const RobotNoise& noise) = 0;
     /// A simulator stops its clock; a real robot stops its motors and ignores wheel commands
     /// until resumed (its clock cannot stop: frames keep coming, the robot stands still).
     virtual void set_paused(bool paused) = 0;
@@ -41,6 +41,9 @@ class RobotConnection {
     virtual LinkCapabilities capabilities() const = 0;
     /// How it is doing now (state, address, counters, battery where there is one).
     virtual LinkHealth health() const = 0;
+    /// What summary.json says of the link after the run (docs/cli.md): its "kind" (the
+    /// registry's name), where it went, and its own counters; after close().
+    virtual nlohmann::json summary() = 0;
 };
 
 }  // namespace legofeup::lessons

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "legofeup/core/loop_config.hpp"
+#include "legofeup/lessons/link_health.hpp"
 #include "legofeup/sim/robot_spec.hpp"
 #include "legofeup/sim/simulator.hpp"
 #include "legofeup/sim/world.hpp"
@@ -137,6 +138,10 @@ struct FileStamp {
 
 /// The stamp of the file at `path`; none when there is no such file (a built-in name).
 std::optional<FileStamp> stamp_of(const std::string& path);
+
+/// The noise of a simulated robot that a link with live noise takes
+/// (RobotConnection::set_noise): E_d, E_b, slip and the IR's σ.
+RobotNoise robot_noise(const sim::RobotSpec& robot);
 
 /// A run ready to execute: everything derived, cross-checked and validated.
 struct ResolvedRun {

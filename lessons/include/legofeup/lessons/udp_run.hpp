@@ -43,7 +43,7 @@ class UdpRobotConnection final : public RobotConnection {
 
     RobotLink& robot_link() override { return link_; }
     TruthSource* truth_source() override { return &truth_; }
-    void set_noise(const sim::RobotSpec& robot) override;
+    void set_noise(const RobotNoise& noise) override;
     /// Pauses or resumes the server's clock.
     void set_paused(bool paused) override;
     std::string teleport(const Pose2& pose) override {
@@ -57,8 +57,12 @@ class UdpRobotConnection final : public RobotConnection {
     LinkCapabilities capabilities() const override { return {true, true, true, true, false}; }
     /// The robot stream's counters: frames accepted and missing, timeouts, malformed.
     LinkHealth health() const override;
+    /// kind "udp", the three ports, the robot stream's counters and the server's own
+    /// (asked for now: its time scale, commands accepted and missing, overruns).
+    nlohmann::json summary() override;
 
   private:
+    UdpTarget target_;
     comms::Endpoint robot_;
     comms::ControlClient control_;
     comms::TruthReceiver truth_;
@@ -66,7 +70,7 @@ class UdpRobotConnection final : public RobotConnection {
 };
 
 /// The noise a run asks of the simulated robot, as the control stream sets it.
-comms::NoiseSettings noise_settings_of(const sim::RobotSpec& robot);
+comms::NoiseSettings noise_settings_of(const RobotNoise& noise);
 
 struct UdpRunReport {
     RunResult result;

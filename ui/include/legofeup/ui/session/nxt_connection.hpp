@@ -8,9 +8,9 @@
 #include <QString>
 #include <memory>
 
+#include "legofeup/lessons/links/link_kind.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/run_config.hpp"
-#include "legofeup/ui/session/live_run.hpp"
 
 namespace legofeup::ui {
 
@@ -30,8 +30,9 @@ class EmulatedBrick {
 
 /// What a run on an NXT needs before it starts.
 struct NxtConnection {
-    /// Takes the brick on the run's worker thread; empty when there is none (see problem).
-    LiveRun::ConnectionFactory connect;
+    /// The link to the brick, from the link registry (its nxt entry), with the profile's
+    /// wiring; the run connects it on its worker thread. Null when there is none (see problem).
+    std::unique_ptr<lessons::LinkPlan> plan;
     /// The emulated brick, when the choice rehearses with one: kept while the run lasts.
     std::unique_ptr<EmulatedBrick> emulated_brick;
     /// Why there is no connection, in the user's words; empty when there is one.

@@ -20,6 +20,7 @@
 #include <memory>
 
 #include "legofeup/lessons/config_schema.hpp"
+#include "legofeup/lessons/links/link_kind.hpp"
 #include "legofeup/lessons/recording/run_log.hpp"
 #include "legofeup/lessons/robot_profile.hpp"
 #include "legofeup/lessons/run_config.hpp"
@@ -154,7 +155,11 @@ class Session : public QObject {
     std::optional<LiveRun::ConnectionFactory> prepareConnection();
     /// The NXT's (nxt_connection.hpp), with its robot profile: the brick at the address typed,
     /// or an emulated brick on this run's simulator, started first.
-    std::optional<LiveRun::ConnectionFactory> prepareNxt();
+    std::unique_ptr<lessons::LinkPlan> prepareNxt();
+    /// The registry's plan for `request`, or null after emitting problem() with why not.
+    std::unique_ptr<lessons::LinkPlan> planLink(const lessons::LinkRequest& request);
+    /// Starts the embedded simulator for this run and plans the link to it (null: problem()).
+    std::unique_ptr<lessons::LinkPlan> startEmbeddedSimulator();
     /// `run` with the NXT run's robot profile applied to the filter (as it is without one).
     lessons::ResolvedRun forThisRobot(lessons::ResolvedRun run) const;
     /// Starts recording this run into the recording folder (a RunRecorder of its own).
