@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (in the `asan` preset's tree: clang, ASan + UBSan, coverage
-# instrumentation) — the UDP protocol's decoders, the NXT codec and the readers of the files
+# Builds the libFuzzer targets (in the `fuzz` preset's tree, build/fuzz-tree: clang, ASan +
+# UBSan, coverage instrumentation) — the UDP protocol's decoders, the NXT codec and the readers of the files
 # users hand in — and runs each for a bounded time, two at a time (one per core).
 # Usage: scripts/fuzz.sh [seconds per target]
 # Each starts from its seeds in fuzz/corpus/<target>/ (when there are any; what it finds
@@ -17,7 +17,7 @@ if ! [[ "$seconds" =~ ^[1-9][0-9]*$ ]]; then
 fi
 parallel=2
 
-cmake --preset asan
+cmake --preset fuzz
 cmake --build --preset fuzz
 mkdir -p build/fuzz/artifacts
 
@@ -49,11 +49,11 @@ report() {
 }
 
 fuzzers=()
-for fuzzer in build/asan/fuzz/fuzz_*; do
+for fuzzer in build/fuzz-tree/fuzz/fuzz_*; do
     [[ -f "$fuzzer" && -x "$fuzzer" ]] && fuzzers+=("$fuzzer") # skip the .options files
 done
 if [[ ${#fuzzers[@]} -eq 0 ]]; then
-    echo "scripts/fuzz.sh: no fuzzer was built in build/asan/fuzz" >&2
+    echo "scripts/fuzz.sh: no fuzzer was built in build/fuzz-tree/fuzz" >&2
     exit 1
 fi
 
