@@ -65,19 +65,17 @@ NxtConnection prepare_nxt_connection(const LinkChoice& choice, const lessons::Ro
         }
     } else {
         request.address = normalized_nxt_address(choice.nxt_address).toStdString();
+        if (!lessons::is_nxt_link(request.address)) {  // the registry would take a simulator's
+            connection.problem =
+                QObject::tr("The NXT's address: %1 names no NXT (bt:…, serial:… or tcp:…)")
+                    .arg(QString::fromStdString(request.address));
+            return connection;
+        }
     }
     try {
         connection.plan = lessons::plan_link(request);  // the registry's nxt entry
     } catch (const lessons::InputError& error) {
         connection.problem = QObject::tr("The NXT's address: %1").arg(error.what());
-        connection.emulated_brick.reset();
-        return connection;
-    }
-    if (!connection.plan || !lessons::is_nxt_link(request.address)) {
-        connection.problem =
-            QObject::tr("The NXT's address: %1 names no NXT (bt:…, serial:… or tcp:…)")
-                .arg(QString::fromStdString(request.address));
-        connection.plan.reset();
         connection.emulated_brick.reset();
         return connection;
     }

@@ -10,10 +10,6 @@
 namespace legofeup::lessons {
 namespace {
 
-bool takes_nxt(std::string_view address) {
-    return is_nxt_link(address);
-}
-
 std::unique_ptr<LinkPlan> refuse_nxt(const LinkRequest& request) {
     throw InputError({{"", 0, "--link", request.address, std::string(kNoNxtSupport)}});
 }
@@ -26,7 +22,7 @@ void refuse_options_in_this_build(const LinkRequest& request) {
 
 const LinkKind& nxt_link_kind() {
     static const LinkKind kind{"nxt", "bt:…, serial:… or tcp:… (a LEGO NXT; not in this build)",
-                               &takes_nxt, &refuse_nxt, &refuse_options_in_this_build};
+                               &is_nxt_link, &refuse_nxt, &refuse_options_in_this_build};
     return kind;
 }
 

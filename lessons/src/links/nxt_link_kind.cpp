@@ -26,10 +26,6 @@ class NxtLinkPlan final : public LinkPlan {
     NxtTarget target_;
 };
 
-bool takes_nxt(std::string_view address) {
-    return is_nxt_link(address);
-}
-
 std::unique_ptr<LinkPlan> plan_nxt(const LinkRequest& request) {
     return std::make_unique<NxtLinkPlan>(
         parse_nxt_target(request.address, request.relay, request.truth_url));
@@ -44,7 +40,7 @@ void refuse_options_for_other_links(const LinkRequest& request) {
 const LinkKind& nxt_link_kind() {
     static const LinkKind kind{"nxt",
                                "bt:XX:XX:XX:XX:XX:XX, serial:DEVICE or tcp:HOST:PORT (a LEGO NXT)",
-                               &takes_nxt, &plan_nxt, &refuse_options_for_other_links};
+                               &is_nxt_link, &plan_nxt, &refuse_options_for_other_links};
     return kind;
 }
 
