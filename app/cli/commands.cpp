@@ -71,8 +71,7 @@ struct LinkRunReport {
     lessons::RunResult result;
     nlohmann::json link;  ///< RobotConnection::summary(): summary.json's "link"
     lessons::LinkHealth health;
-    lessons::LinkCapabilities capabilities;
-    bool truth_known = false;
+    lessons::LinkCapabilities capabilities;  ///< ground_truth: truth_source() is not null
     std::string interrupted;  ///< the link failure that ended the run (empty: it did not)
 };
 
@@ -94,7 +93,6 @@ LinkRunReport run_on_link(const lessons::ResolvedRun& run, const lessons::LinkPl
     lessons::UnknownTruth unknown;
     TruthSource* truth = connection->truth_source();
     LinkRunReport report;
-    report.truth_known = truth != nullptr;
     report.capabilities = connection->capabilities();
     try {
         report.result =
@@ -252,7 +250,7 @@ int run_command(const RunOptions& options) {
         summary.stream() << summary_json.dump(2) << '\n';
         summary.commit();
         // Plots compare the estimate with the truth: a real robot has none.
-        const bool plots = options.plots && !(over_link && !over_link->truth_known);
+        const bool plots = options.plots && !(over_link && !over_link->capabilities.ground_truth);
         if (plots) {
             report::write_run_plots(recording, run.world, out, "LegoFeup " + title);
         }
