@@ -122,6 +122,11 @@ class TableReader {
                         laps ? "must be between 1 and 1000" : "must not be negative");
                 return;
             }
+            if (number > setting->integer_max) {
+                problem(line, key, node_text(node),
+                        "must be at most " + std::to_string(setting->integer_max));
+                return;
+            }
         }
         if (setting->built_in_files) {
             // A file: relative to this configuration's directory, unless a built-in's name.

@@ -6,6 +6,7 @@
 
 #include <concepts>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -171,11 +172,12 @@ Setting point(const SettingFacts& facts, Access access) {
     return bound<Vector2>(facts, SettingType::Point, access);
 }
 
-// A whole number bound to an int member; the reader refuses negative numbers, validate()
-// the rest of the range.
+// A whole number bound to an int member; the reader refuses negative numbers and numbers
+// an int cannot hold, validate() the rest of the range.
 template <class Access>
 Setting whole(const SettingFacts& facts, Access access) {
     Setting s = described(facts, SettingType::Integer);
+    s.integer_max = std::numeric_limits<int>::max();
     s.get = [access](const RunConfig& c) -> SettingValue {
         return static_cast<std::int64_t>(access(c));
     };

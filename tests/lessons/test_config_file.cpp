@@ -143,6 +143,24 @@ TEST(ConfigFile, RefusesNegativeSeedsAndLapsOutOfRange) {
               "s.toml:1: laps = 0: must be between 1 and 1000");
 }
 
+// Found by fuzz_config_file: 2147483648 was cut to an int's −2147483648, which the writer
+// then wrote and the reader refused.
+TEST(ConfigFile, RefusesWholeNumbersTheirSettingCannotHold) {
+    RunConfig config;
+    const auto problems = problem_messages_of([&] {
+        apply_config_toml("[laser]\nmin_matched_points = 2147483648\n", "big.toml", config);
+    });
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0],
+              "big.toml:2: laser.min_matched_points = 2147483648: must be at most 2147483647");
+    EXPECT_EQ(config.lesson.laser.min_matched_points, LaserTuning{}.min_matched_points);
+    // The largest int is taken as it is; the seed, a 64-bit number, takes more.
+    apply_config_toml("seed = 4294967296\n[laser]\nmin_matched_points = 2147483647\n", "ok.toml",
+                      config);
+    EXPECT_EQ(config.lesson.laser.min_matched_points, 2147483647);
+    EXPECT_EQ(config.seed, 4294967296u);
+}
+
 TEST(ConfigFile, WrittenConfigurationReadsBackToTheSameValues) {
     RunConfig config;
     config.seed = 123456789;

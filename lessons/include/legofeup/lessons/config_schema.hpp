@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <variant>
 #include <vector>
@@ -83,6 +84,9 @@ struct Setting {
     SettingUse use;
     SettingType type = SettingType::Real;
     std::vector<std::string> choices;  ///< allowed texts of a Choice
+    /// The largest whole number an Integer setting takes: what its member can hold (an
+    /// int's 2147483647), so that no value read is cut to another one.
+    std::int64_t integer_max = std::numeric_limits<std::int64_t>::max();
     std::function<SettingValue(const RunConfig&)> get;
     std::function<void(RunConfig&, const SettingValue&)> set;
     /// For optional settings: whether the configuration sets it (files write unset ones as
