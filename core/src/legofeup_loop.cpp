@@ -37,6 +37,7 @@ LegoFeupLoop::LegoFeupLoop(LoopConfig config)
     if (const auto issues = validate(config_); !issues.empty()) {
         throw invalid_configuration("loop", issues);
     }
+    scan_endpoints_.reserve(static_cast<std::size_t>(kMaxScanBeams));
     apply_tuning();
     reset();
 }
@@ -60,13 +61,35 @@ void LegoFeupLoop::apply_tuning() {
     // so far; then both take the new ones.
     switch_kind(filter_, lesson.kind);
     switch_kind(shadow_, pose_estimator_entry(lesson.kind).shadow);
-    estimator_settings_ = {tuning.limits, lesson.ukf};
+    update_free_space();
+    estimator_settings_ = {tuning.limits, lesson.ukf, lesson.particles, config_.random_seed,
+                           free_space_};
     filter_->configure(estimator_settings_);
     shadow_->configure(estimator_settings_);
     fusion_.set_limits(tuning.limits);
     laser_.configure(lesson.laser, config_.map);
     shadow_laser_.configure(lesson.laser, config_.map);
     speeds_.configure(lesson, config_.odometry);
+}
+
+// The free space and likelihood field take a pass over the map each (a building's map: a
+// few milliseconds), so they are built again only when the map changes.
+void LegoFeupLoop::update_free_space() {
+    const bool on_map = config_.lesson.localisation == Localisation::Laser && config_.map;
+    const OccupancyGrid* map = on_map ? config_.map.get() : nullptr;
+    const double max_distance = config_.lesson.particles.scan_model.max_distance;
+    if (map != nullptr
+        && (!likelihood_field_ || map != free_space_map_
+            || max_distance != likelihood_field_max_distance_)) {
+        likelihood_field_ = std::make_shared<const LikelihoodField>(*map, max_distance);
+        likelihood_field_max_distance_ = max_distance;
+    }
+    if (free_space_ && map == free_space_map_ && map != nullptr) {
+        return;  // the same map: its free cells are known
+    }
+    free_space_ = std::make_shared<const FreeSpace>(
+        map != nullptr ? FreeSpace::of_grid(*map) : FreeSpace::bounding(config_.walls));
+    free_space_map_ = map;
 }
 
 void LegoFeupLoop::switch_kind(std::unique_ptr<PoseEstimator>& estimator, FilterKind kind) const {
@@ -84,8 +107,13 @@ void LegoFeupLoop::reset() {
     const StateCovariance P0 =
         StateVector(initial.var_x, initial.var_y, initial.var_theta).asDiagonal();
     const StateVector x0 = to_state(initial.pose);
-    filter_->reset(x0, P0);
-    shadow_->reset(x0, P0);
+    // An unknown pose with no free space to spread over is refused by validate().
+    if (!(initial.unknown_pose && filter_->reset_uniform())) {
+        filter_->reset(x0, P0);
+    }
+    if (!(initial.unknown_pose && shadow_->reset_uniform())) {
+        shadow_->reset(x0, P0);
+    }
     fusion_.reset(x0, P0, kInitialVelocityVariance);
     laser_.reset();
     shadow_laser_.reset();
@@ -102,6 +130,7 @@ void LegoFeupLoop::reset() {
     snapshot_.filter_kind = filter_->kind();
     snapshot_.estimate = filter_->state();
     snapshot_.covariance = filter_->covariance();
+    snapshot_.particles = filter_->particles();
     snapshot_.odometry_pose = odometry_pose_;
 }
 
@@ -333,12 +362,40 @@ void LegoFeupLoop::update_with_compass(PoseEstimator& filter, const LoopSnapshot
 // match (if any) is a pose observation. The shadow filter matches too, unpublished.
 void LegoFeupLoop::update_with_laser(PoseEstimator& filter, const SensorFrame& frame,
                                      bool primary) {
+    if (filter.weighs_scans()) {
+        if (primary) {
+            weigh_scan(filter, frame.laser, snapshot_.laser);
+        } else {
+            shadow_laser_report_ = LaserUpdate{};
+            weigh_scan(filter, frame.laser, shadow_laser_report_);
+        }
+        return;
+    }
     if (primary) {
         laser_.process(filter, frame.laser, snapshot_.laser);
     } else {
         shadow_laser_report_ = LaserUpdate{};
         shadow_laser_.process(filter, frame.laser, shadow_laser_report_);
     }
+}
+
+// The particle filter's laser update: the scan's end points (every beam_stride-th beam with
+// a range, in the robot frame through the scanner's mount) weighed against the map's
+// likelihood field. The report says a scan came and how the update went; ICP's parts stay
+// empty.
+void LegoFeupLoop::weigh_scan(PoseEstimator& filter, const LaserScan& scan, LaserUpdate& report) {
+    if (!likelihood_field_ || scan.beam_count != config_.lesson.laser.geometry.beam_count) {
+        report.wrong_beam_count = likelihood_field_ != nullptr;
+        return;
+    }
+    const LaserTuning& laser = config_.lesson.laser;
+    const LikelihoodFieldParams& model = config_.lesson.particles.scan_model;
+    scan_endpoints(scan, laser.geometry, laser.mount, model.beam_stride, scan_endpoints_);
+    report.scan_received = true;
+    report.measured_points = static_cast<int>(scan_endpoints_.size());
+    report.status = filter.update(
+        ScanLikelihood{*likelihood_field_, scan_endpoints_, model, laser.geometry.range_max});
+    report.matched = report.status == StepStatus::Applied;
 }
 
 // This period's laser report starts empty but for what outlives a scan (the mismatch
@@ -468,6 +525,7 @@ void LegoFeupLoop::control_and_publish() {
         s.covariance = fusion_.pose_covariance();
         s.fused_velocity = fusion_.velocity();
     }
+    s.particles = uses_pose_filter() ? filter_->particles() : ParticleSummary{};
     s.shadow = ShadowEstimate{};
     if (config_.lesson.compare_kinds && uses_pose_filter()) {
         s.shadow = {true, shadow_->kind(), shadow_->state(), shadow_->covariance()};

@@ -24,6 +24,8 @@ const char* to_string(FilterKind kind) {
             return "ekf";
         case FilterKind::Ukf:
             return "ukf";
+        case FilterKind::Pf:
+            return "pf";
     }
     return "unknown";
 }
@@ -40,7 +42,7 @@ std::optional<Localisation> localisation_from_string(std::string_view text) {
 }
 
 std::optional<FilterKind> filter_kind_from_string(std::string_view text) {
-    for (const FilterKind value : {FilterKind::Ekf, FilterKind::Ukf}) {
+    for (const FilterKind value : {FilterKind::Ekf, FilterKind::Ukf, FilterKind::Pf}) {
         if (text == to_string(value)) {
             return value;
         }

@@ -1,10 +1,13 @@
 #include "legofeup/core/loop_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <type_traits>
 #include <utility>
 #include <variant>
+
+#include "legofeup/core/free_space.hpp"
 
 namespace legofeup {
 namespace {
@@ -91,6 +94,17 @@ void check_variance(ConfigChecker& check, const std::string& field, double value
 void check_lesson_filters(ConfigChecker& check, const LessonFilters& lesson) {
     // The smallest sigma-point dimension is the pose's 3 (updates); n + κ must stay positive.
     check.in_range("filter.ukf_kappa", lesson.ukf.kappa, -2.9, 100.0);
+    const ParticleFilterTuning& particles = lesson.particles;
+    check.require(particles.particle_count >= 1 && particles.particle_count <= kMaxParticleCount,
+                  "pf.particles", particles.particle_count,
+                  "must be between 1 and " + std::to_string(kMaxParticleCount));
+    check.in_range("pf.resample_threshold", particles.resample_threshold, 0.0, 1.0);
+    check.require(particles.alpha_slow > 0.0 && particles.alpha_slow < 1.0, "pf.alpha_slow",
+                  particles.alpha_slow, "must be strictly between 0 and 1");
+    check.require(particles.alpha_fast > particles.alpha_slow && particles.alpha_fast <= 1.0,
+                  "pf.alpha_fast", particles.alpha_fast,
+                  "must be above pf.alpha_slow and at most 1 (the short-term average "
+                  "follows the likelihood faster than the long-term one)");
     check.in_range("beacons.r_bearing", lesson.beacons.r_bearing, kMinUserVariance, 100.0);
     check.require(lesson.beacons.gate_probability > 0.0 && lesson.beacons.gate_probability < 1.0,
                   "beacons.gate_probability", lesson.beacons.gate_probability,
@@ -276,7 +290,20 @@ std::vector<ConfigIssue> validate(const LoopConfig& config) {
     check_lesson_filters(check, config.lesson);
     check_laser(check, config.lesson.laser, config.map,
                 config.lesson.localisation == Localisation::Laser);
+    if (config.initial.unknown_pose) {
+        // Global localisation spreads the belief over the free space (free_space.hpp).
+        const bool laser = config.lesson.localisation == Localisation::Laser;
+        const bool has_room =
+            laser && config.map
+                ? std::find(config.map->cells().begin(), config.map->cells().end(), CellState::Free)
+                      != config.map->cells().end()
+                : !FreeSpace::bounding(config.walls).empty();
+        check.require(has_room, "initial.unknown_pose", 1.0,
+                      laser ? "needs a map with free cells to spread the belief over"
+                            : "needs walls that enclose an area to spread the belief over");
+    }
     append(issues, validate(config.lesson.laser.icp, "lesson.laser.icp"));
+    append(issues, validate(config.lesson.particles.scan_model, "pf"));
     append(issues, validate(config.lesson.laser.geometry, "lesson.laser.geometry"));
     check_beacons(check, config.beacons);
     check.positive("simulator.control_period", config.control_period, 10.0);

@@ -3,6 +3,7 @@
 #include <array>
 #include <stdexcept>
 
+#include "legofeup/core/particle_filter.hpp"
 #include "legofeup/core/pose_estimator_for.hpp"
 #include "legofeup/core/pose_state_space.hpp"
 #include "legofeup/core/unscented_kalman_filter.hpp"
@@ -20,6 +21,7 @@ constexpr std::array kEstimators{
                        make<ExtendedKalmanFilter<PoseStateSpace>, FilterKind::Ekf>},
     PoseEstimatorEntry{FilterKind::Ukf, FilterKind::Ekf,
                        make<UnscentedKalmanFilter<PoseStateSpace>, FilterKind::Ukf>},
+    PoseEstimatorEntry{FilterKind::Pf, FilterKind::Ekf, make<ParticleFilter, FilterKind::Pf>},
 };
 
 }  // namespace

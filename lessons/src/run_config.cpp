@@ -206,6 +206,7 @@ ResolvedRun resolve_with(const RunConfig& config, sim::WorldSpec world,
     loop.control_period = config.simulator.control_period;
     loop.initial = config.initial;
     loop.initial.pose = config.initial_pose.applied_to(run.world.start);
+    loop.random_seed = config.seed;
     loop.motion = config.motion;
     loop.gains = config.gains;
     loop.controller = make_controller(config, run.world);

@@ -94,6 +94,18 @@ void add_initial_and_control_settings(std::vector<Setting>& s) {
          .applies = SettingApplies::NextStart,
          .use = kEveryRun},
         [](auto& c) -> auto& { return c.initial.var_theta; }));
+    s.push_back(boolean(
+        {.key = "initial.unknown_pose",
+         .field = "initial.unknown_pose",
+         .label = in_words("unknown pose"),
+         .help = tr_noop("the filter does not know where the robot starts (global "
+                         "localisation): a particle filter spreads its cloud over the free "
+                         "space, an EKF or UKF takes its mean and covariance; x, y, heading "
+                         "and P0 are then unused"),
+         .page = SettingPage::InitialBelief,
+         .applies = SettingApplies::NextStart,
+         .use = kEveryRun},
+        [](auto& c) -> auto& { return c.initial.unknown_pose; }));
     Setting routine =
         described({.key = "control.routine",
                    .field = "control.routine",

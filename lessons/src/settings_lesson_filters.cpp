@@ -14,18 +14,19 @@ void add_lesson_filter_settings(std::vector<Setting>& s) {
         {.key = "filter.kind",
          .field = "filter.kind",
          .label = in_words("kind"),
-         .help = tr_noop("the pose filter: ekf or ukf (may change while running)"),
+         .help = tr_noop("the pose filter: ekf, ukf or pf, the particle filter (may change "
+                         "while running)"),
          .page = SettingPage::Filter,
          .applies = SettingApplies::Live,
          .use = kPoseFilterLessons},
-        {FilterKind::Ekf, FilterKind::Ukf}, filter_kind_from_string,
+        {FilterKind::Ekf, FilterKind::Ukf, FilterKind::Pf}, filter_kind_from_string,
         [](auto& c) -> auto& { return c.lesson.kind; }));
     s.push_back(boolean(
         {.key = "filter.compare_kinds",
          .field = "filter.compare_kinds",
          .label = in_words("compare kinds"),
-         .help =
-             tr_noop("also run the other kind (EKF/UKF) on the same frames, for comparison only"),
+         .help = tr_noop("also run another kind on the same frames, for comparison only: the UKF "
+                         "beside the EKF, the EKF beside the UKF or the particle filter"),
          .page = SettingPage::Filter,
          .applies = SettingApplies::Live,
          .use = kPoseFilterLessons},
@@ -40,6 +41,96 @@ void add_lesson_filter_settings(std::vector<Setting>& s) {
          .applies = SettingApplies::Live,
          .use = kPoseFilterLessons},
         [](auto& c) -> auto& { return c.lesson.ukf.kappa; }));
+    s.push_back(whole(
+        {.key = "pf.particles",
+         .field = "pf.particles",
+         .label = in_words("particles"),
+         .help = tr_noop("particles in the particle filter's cloud (1 … 1000000); a new count "
+                         "resamples the cloud to it"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.particle_count; }));
+    s.push_back(real(
+        {.key = "pf.resample_threshold",
+         .field = "pf.resample_threshold",
+         .label = in_words("resample threshold"),
+         .help = tr_noop("the particle filter resamples when N_eff falls below this share of "
+                         "its particles (0 … 1; 1: after every update)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.resample_threshold; }));
+    s.push_back(boolean(
+        {.key = "pf.recovery",
+         .field = "pf.recovery",
+         .label = in_words("recovery"),
+         .help = tr_noop("augmented MCL: while the short-term likelihood is below the long-term "
+                         "one, replace particles by random poses in the free space (finds a "
+                         "kidnapped robot)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.recovery; }));
+    s.push_back(real(
+        {.key = "pf.alpha_slow",
+         .field = "pf.alpha_slow",
+         .label = in_words("alpha slow"),
+         .help = tr_noop("smoothing of the long-term average likelihood w_slow (0 … 1)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.alpha_slow; }));
+    s.push_back(real(
+        {.key = "pf.alpha_fast",
+         .field = "pf.alpha_fast",
+         .label = in_words("alpha fast"),
+         .help = tr_noop("smoothing of the short-term average likelihood w_fast (above "
+                         "alpha_slow, at most 1)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.alpha_fast; }));
+    s.push_back(real(
+        {.key = "pf.sigma_hit",
+         .field = "pf.sigma_hit",
+         .label = in_words("sigma hit"),
+         .help = tr_noop("laser likelihood field: standard deviation of a beam's end point "
+                         "about the nearest obstacle, m"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.scan_model.sigma_hit; }));
+    s.push_back(real(
+        {.key = "pf.z_hit",
+         .field = "pf.z_hit",
+         .label = in_words("z hit"),
+         .help = tr_noop("laser likelihood field: weight of the Gaussian about the nearest "
+                         "obstacle (0 … 1, relative to z_random)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.scan_model.z_hit; }));
+    s.push_back(real(
+        {.key = "pf.z_random",
+         .field = "pf.z_random",
+         .label = in_words("z random"),
+         .help = tr_noop("laser likelihood field: weight of the uniform density of random "
+                         "readings, which keeps an unmapped obstacle from killing particles "
+                         "(0 … 1)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.scan_model.z_random; }));
+    s.push_back(whole(
+        {.key = "pf.beam_stride",
+         .field = "pf.beam_stride",
+         .label = in_words("beam stride"),
+         .help = tr_noop("laser likelihood field: use every k-th beam of a scan (1 … 1024)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.scan_model.beam_stride; }));
     s.push_back(choice(
         {.key = "localisation.method",
          .field = "localisation.method",

@@ -111,13 +111,26 @@ void laser_cells(std::ostream& out, const LoopSnapshot& s) {
 }
 
 /// The wall association's gate and the candidate wall's d² = νᵀS⁻¹ν with the χ²(2) threshold
-/// (computed under either gate); empty without a candidate wall. The last cells of a row.
+/// (computed under either gate); empty without a candidate wall.
 void association_gate_cells(std::ostream& out, const LoopSnapshot& s) {
     const AssociationResult& a = s.association;
     const bool candidate = a.wall >= 0;
     out << (candidate ? to_string(a.gate) : "") << ',';
     number_if(out, candidate, a.mahalanobis_d2);
-    cell(out, candidate ? a.mahalanobis_threshold : kNone);
+    number_if(out, candidate, a.mahalanobis_threshold);
+}
+
+/// The particle filter's cloud (particle_summary.hpp): its count, N_eff, the share of the
+/// weight within 0.5 m of the mean, whether the step resampled and how many particles the
+/// recovery injected. Empty cells with the other filters. The last cells of a row.
+void particle_cells(std::ostream& out, const LoopSnapshot& s) {
+    const ParticleSummary& p = s.particles;
+    const bool cloud = p.count > 0;
+    number_if(out, cloud, p.count);
+    number_if(out, cloud, p.effective);
+    number_if(out, cloud, p.near_mean_share);
+    number_if(out, cloud, p.resampled ? 1.0 : 0.0);
+    cell(out, cloud ? p.injected : kNone);
     out << '\n';
 }
 
@@ -141,7 +154,9 @@ const char* trace_csv_header() {
            // The loop's own checks of its inputs.
            "odometry_glitch,prediction,"
            // The wall association's gate (docs/loop.md, "Wall association").
-           "association_gate,association_d2,association_d2_threshold";
+           "association_gate,association_d2,association_d2_threshold,"
+           // The particle filter (docs/particle_filter.md).
+           "pf_particles,pf_neff,pf_near_mean,pf_resampled,pf_injected";
 }
 
 TraceCsvWriter::TraceCsvWriter(std::ostream& out, const LoopConfig& loop) : out_(out), loop_(loop) {
@@ -183,7 +198,8 @@ void TraceCsvWriter::on_step(const LoopSnapshot& s, const GroundTruth& truth) {
     laser_cells(out_, s);
     out_ << (s.odometry_glitch ? 1 : 0) << ',';
     out_ << to_string(s.predict_status) << ',';
-    association_gate_cells(out_, s);  // the last cells, and the end of the row
+    association_gate_cells(out_, s);
+    particle_cells(out_, s);  // the last cells, and the end of the row
 }
 
 }  // namespace legofeup::lessons

@@ -55,6 +55,50 @@ TEST(LoopConfig, RefusesNonFiniteAndNonPositiveValues) {
     EXPECT_EQ(issues.size(), 7u);
 }
 
+TEST(LoopConfig, RefusesAbsurdParticleFilterSettings) {
+    LoopConfig config;
+    config.lesson.kind = FilterKind::Pf;
+    EXPECT_TRUE(validate(config).empty());
+    for (const int count : {0, -5, kMaxParticleCount + 1, 1'000'000'000}) {
+        config.lesson.particles.particle_count = count;
+        const auto issues = validate(config);
+        ASSERT_EQ(issues.size(), 1u) << count;
+        EXPECT_EQ(issues[0].field, "pf.particles");
+        EXPECT_EQ(issues[0].reason, "must be between 1 and 1000000");
+    }
+    config.lesson.particles = {};
+    config.lesson.particles.alpha_fast = 0.0005;  // below alpha_slow
+    config.lesson.particles.resample_threshold = 1.5;
+    config.lesson.particles.scan_model.sigma_hit = 0.0;
+    const auto issues = validate(config);
+    for (const char* field : {"pf.alpha_fast", "pf.resample_threshold", "pf.sigma_hit"}) {
+        EXPECT_TRUE(mentions(issues, field)) << field;
+    }
+    EXPECT_EQ(issues.size(), 3u);
+}
+
+// Global localisation needs somewhere to spread the belief: walls that enclose an area, or
+// in the laser lesson a map with a free cell.
+TEST(LoopConfig, AnUnknownPoseNeedsFreeSpace) {
+    LoopConfig config;
+    config.initial.unknown_pose = true;
+    EXPECT_TRUE(validate(config).empty());
+    config.walls = WallMap{};
+    auto issues = validate(config);
+    ASSERT_EQ(issues.size(), 1u);
+    EXPECT_EQ(issues[0].message(),
+              "initial.unknown_pose = 1: needs walls that enclose an area to spread the belief "
+              "over");
+    config.walls = standard_arena_walls(ArenaSpec{});
+    config.lesson.localisation = Localisation::Laser;
+    config.map = std::make_shared<const OccupancyGrid>(
+        4, 4, 0.5, Pose2{}, std::vector<CellState>(16, CellState::Occupied));
+    issues = validate(config);
+    EXPECT_TRUE(mentions(issues, "initial.unknown_pose"));
+    config.initial.unknown_pose = false;
+    EXPECT_FALSE(mentions(validate(config), "initial.unknown_pose"));
+}
+
 TEST(LoopConfig, ChecksTheIrCurveAndMount) {
     LoopConfig config;
     config.ir_curve.max_range = 0.03;  // below min_range

@@ -268,6 +268,25 @@ TEST(MonteCarlo, BitIdenticalForOneOrTwoJobsAndForShardsMerged) {
     }
 }
 
+// The particle filter draws from its own random stream, started from each run's seed: its
+// runs are as repeatable, and as independent of the thread that ran them, as the EKF's (and
+// it is the particle filter that ran: the EKF's runs differ).
+TEST(MonteCarlo, TheParticleFilterIsBitIdenticalForOneOrTwoJobs) {
+    MonteCarloSpec spec = short_spec(3);
+    spec.config.lesson.kind = FilterKind::Pf;
+    spec.config.lesson.particles.particle_count = 200;
+    spec.config.lesson.particles.recovery = true;
+    const MonteCarloSums one = run_monte_carlo(spec, 1);
+    const MonteCarloSums two = run_monte_carlo(spec, 2);
+    ASSERT_EQ(one.steps.size(), two.steps.size());
+    for (std::size_t k = 0; k < one.steps.size(); ++k) {
+        ASSERT_TRUE(one.steps[k].nees == two.steps[k].nees) << k;
+    }
+    EXPECT_EQ(monte_carlo_runs_csv(one.runs), monte_carlo_runs_csv(two.runs));
+    spec.config.lesson.kind = FilterKind::Ekf;
+    EXPECT_NE(monte_carlo_runs_csv(run_monte_carlo(spec, 1).runs), monte_carlo_runs_csv(one.runs));
+}
+
 TEST(ShardFiles, MergeChecksTheyAreOneBatchAndAllThere) {
     const MonteCarloSpec spec = short_spec(2);
     const BatchHeader header = monte_carlo_header(spec, "f", "test");

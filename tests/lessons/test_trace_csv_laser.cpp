@@ -26,10 +26,18 @@ const std::vector<std::string> kLaserColumns = {
     "laser_recovery",       "laser_innovation_x",  "laser_innovation_y",   "laser_innovation_theta",
     "laser_observed_x",     "laser_observed_y",    "laser_observed_theta", "laser_nis"};
 
-// The columns after the laser lesson's: the loop's glitch flag and how it predicted, then the
-// association gate's.
-const std::vector<std::string> kLastColumns = {"odometry_glitch", "prediction", "association_gate",
-                                               "association_d2", "association_d2_threshold"};
+// The columns after the laser lesson's: the loop's glitch flag and how it predicted, the
+// association gate's, then the particle filter's.
+const std::vector<std::string> kLastColumns = {"odometry_glitch",
+                                               "prediction",
+                                               "association_gate",
+                                               "association_d2",
+                                               "association_d2_threshold",
+                                               "pf_particles",
+                                               "pf_neff",
+                                               "pf_near_mean",
+                                               "pf_resampled",
+                                               "pf_injected"};
 
 TEST(TraceCsvLaser, TheLaserColumnsComeAfterTheFurtherLessonsAndBeforeTheLoopsOwn) {
     const std::vector<std::string> names = cells_of(trace_csv_header());

@@ -13,10 +13,18 @@ inline QString tr(const char* text) {
 }
 
 inline QString kind_text(FilterKind kind) {
-    return kind == FilterKind::Ukf ? QStringLiteral("UKF") : QStringLiteral("EKF");
+    switch (kind) {
+        case FilterKind::Ekf:
+            return QStringLiteral("EKF");
+        case FilterKind::Ukf:
+            return QStringLiteral("UKF");
+        case FilterKind::Pf:
+            return QStringLiteral("PF");
+    }
+    return QStringLiteral("EKF");
 }
 
-/// What the primary estimate is, for the legend: "EKF", "UKF" or "5-state EKF".
+/// What the primary estimate is, for the legend: "EKF", "UKF", "PF" or "5-state EKF".
 inline QString estimator_text(Localisation localisation, FilterKind kind) {
     return localisation == Localisation::GyroFusion ? QStringLiteral("5-state EKF")
                                                     : kind_text(kind);

@@ -71,6 +71,8 @@ class LegoFeupLoop {
     void apply_tuning();
     /// Replaces `estimator` by one of `kind` (when it differs) that continues from its x and P.
     void switch_kind(std::unique_ptr<PoseEstimator>& estimator, FilterKind kind) const;
+    void update_free_space();
+    void weigh_scan(PoseEstimator& filter, const LaserScan& scan, LaserUpdate& report);
     bool advance_odometry(const SensorFrame& frame);
     Eigen::Matrix2d skipped_motion_noise(double period) const;
     double periods_between(double seconds) const;  // Δt/Ts, see predict_pose
@@ -93,6 +95,15 @@ class LegoFeupLoop {
     // The pose filter and its shadow (run when lesson.compare_kinds), made by the registry
     // when the kind changes, never in a step; the settings they were last configured with.
     PoseEstimatorSettings estimator_settings_;
+    /// Where an unknown pose may be (the laser map's free cells, else the walls' box), for
+    /// global localisation and the particle filter's recovery; rebuilt when the map changes.
+    std::shared_ptr<const FreeSpace> free_space_;
+    const OccupancyGrid* free_space_map_ = nullptr;
+    /// The laser map's likelihood field (the particle filter's laser model), built with
+    /// the free space; null without a map.
+    std::shared_ptr<const LikelihoodField> likelihood_field_;
+    double likelihood_field_max_distance_ = 0.0;
+    std::vector<Vector2> scan_endpoints_;  ///< this scan's, reused (no allocation in a step)
     std::unique_ptr<PoseEstimator> filter_;
     std::unique_ptr<PoseEstimator> shadow_;
     GyroFusionEstimator fusion_;

@@ -11,6 +11,7 @@
 #include "legofeup/core/angles.hpp"
 #include "legofeup/core/icp_2d.hpp"
 #include "legofeup/core/laser_scan.hpp"
+#include "legofeup/core/likelihood_field.hpp"
 
 namespace legofeup {
 
@@ -28,10 +29,11 @@ const char* to_string(Localisation localisation);
 /// otherwise.
 std::optional<Localisation> localisation_from_string(std::string_view text);
 
-/// The Gaussian filter that runs the pose estimate (Walls, Beacons and Compass).
-enum class FilterKind : std::uint8_t { Ekf, Ukf };
+/// The filter that runs the pose estimate (Walls, Beacons, Compass and Laser): the two
+/// Gaussian filters, or the particle filter (Monte Carlo localisation, particle_filter.hpp).
+enum class FilterKind : std::uint8_t { Ekf, Ukf, Pf };
 const char* to_string(FilterKind kind);
-/// The inverse of to_string ("ekf", "ukf"); nullopt otherwise.
+/// The inverse of to_string ("ekf", "ukf", "pf"); nullopt otherwise.
 std::optional<FilterKind> filter_kind_from_string(std::string_view text);
 
 /// Unscented transform spread: sigma points at ±√((n+κ)·P) with weights κ/(n+κ) and
@@ -39,6 +41,34 @@ std::optional<FilterKind> filter_kind_from_string(std::string_view text);
 struct UkfParams {
     double kappa = 0.0;
 };
+
+/// The particle filter (Monte Carlo localisation: Thrun, Burgard & Fox, Probabilistic
+/// Robotics, Table 4.3 with the low-variance sampler of Table 4.4 and the recovery of
+/// augmented MCL, Table 8.3). Its motion noise is the Q the EKF uses, so that one tuning
+/// serves all three filters; docs/particle_filter.md states the maths.
+struct ParticleFilterTuning {
+    int particle_count = 1000;
+    /// Resample when the effective sample size N_eff = 1 / Σ wᵢ² falls below this share of
+    /// the particle count (1: after every update; 0: never, unless recovery injects).
+    double resample_threshold = 0.5;
+    /// Augmented MCL: inject particles drawn uniformly from the free space with probability
+    /// max(0, 1 − w_fast / w_slow), where w_slow and w_fast are long- and short-term averages
+    /// of the measurement likelihood (smoothing factors alpha_slow ≪ alpha_fast). Off unless
+    /// asked for (as in ROS AMCL): a wall reading fits a pose anywhere along a line at the
+    /// right distance, so in the wall lessons injected particles can lure the cloud away.
+    bool recovery = false;
+    double alpha_slow = 0.001;
+    double alpha_fast = 0.1;
+    /// The laser lessons' measurement model: each scan weighs the particles by the likelihood
+    /// field of the map (likelihood_field.hpp) rather than by an ICP match, which needs a
+    /// guess near the truth and so cannot localise globally.
+    LikelihoodFieldParams scan_model;
+
+    friend bool operator==(const ParticleFilterTuning&, const ParticleFilterTuning&) = default;
+};
+
+/// The largest particle count accepted (10⁶ particles are 32 MB and about 0.1 s a step).
+inline constexpr int kMaxParticleCount = 1'000'000;
 
 /// Bearing-only beacon updates (paper 002).
 struct BeaconTuning {
@@ -156,6 +186,7 @@ struct LessonFilters {
     /// never drives the robot): EKF and UKF side by side on one noise realisation.
     bool compare_kinds = false;
     UkfParams ukf;
+    ParticleFilterTuning particles;
     BeaconTuning beacons;
     WheelSpeedKfTuning wheel_speed;
     VelocityKfTuning velocity;

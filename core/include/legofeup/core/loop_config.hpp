@@ -4,6 +4,7 @@
 // one structure; validate() is the single place that decides what is acceptable.
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,6 +44,10 @@ struct InitialBelief {
     double var_x = 1e-4;          ///< P0 diagonal, m²
     double var_y = 1e-4;          ///< m²
     double var_theta = 1e-3;      ///< rad²
+    /// The pose is unknown (global localisation): the filter starts from the whole free
+    /// space — the particle filter's cloud uniform over it, a Gaussian filter its mean and
+    /// covariance (PoseEstimator::reset_uniform) — and `pose` and the variances are unused.
+    bool unknown_pose = false;
 };
 
 struct LoopConfig {
@@ -65,6 +70,9 @@ struct LoopConfig {
     /// copies of the configuration; required when the localisation is Laser.
     std::shared_ptr<const OccupancyGrid> map;
     double control_period = 0.05;  ///< Ts, s: the nominal period (frames carry their times)
+    /// The seed of the loop's own random streams (the particle filter's): the run's seed,
+    /// so that a run is the same bits for the same seed.
+    std::uint64_t random_seed = 1;
     MotionLimits motion;
     ControllerGains gains;
     Controller controller = FollowPath(square_path(ArenaSpec{}), 0);

@@ -12,6 +12,7 @@
 #include "legofeup/core/lesson_filters_config.hpp"
 #include "legofeup/core/motion.hpp"
 #include "legofeup/core/odometry.hpp"
+#include "legofeup/core/particle_summary.hpp"
 #include "legofeup/core/sensor_frame.hpp"
 #include "legofeup/core/sharp_ir.hpp"
 #include "legofeup/core/state.hpp"
@@ -149,6 +150,8 @@ struct LoopSnapshot {
     ExtraReadings readings;
     SpeedEstimates speeds;
     ShadowEstimate shadow;
+    /// The particle filter's cloud after this step (count 0 with the other filters).
+    ParticleSummary particles;
     /// Wall-clock seconds this step spent in the pose filter's predict and updates, and in the
     /// shadow filter's (machine-dependent: shown, never graded).
     double filter_seconds = 0.0;

@@ -8,6 +8,13 @@
 //   state(), covariance()             → X̂, P after the last step
 //   last_repairs()                    → what the covariance guard had to do
 //   reset(x, P), configure(settings)  → a new belief, new limits and parameters
+//   reset_uniform()                   → "the pose is unknown": the particle filter spreads
+//                                       its cloud over the free space, a Gaussian filter
+//                                       takes the free space's mean and covariance
+//   particles()                       → the particle filter's cloud summary (count 0 for
+//                                       the Gaussian filters)
+//   weighs_scans(), update(scan)      → the particle filter's laser model: a whole scan
+//                                       against the map's likelihood field
 //
 // The models are the concrete hook objects of the lessons (odometry_process_model.hpp,
 // wall_measurement.hpp, …): the interface lists each one, so a filter sees the model's own
@@ -26,17 +33,14 @@
 #include "legofeup/core/laser_pose_measurement.hpp"
 #include "legofeup/core/laser_process_model.hpp"
 #include "legofeup/core/lesson_filters_config.hpp"
+#include "legofeup/core/likelihood_field.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
+#include "legofeup/core/particle_summary.hpp"
+#include "legofeup/core/pose_estimator_settings.hpp"
 #include "legofeup/core/state.hpp"
 #include "legofeup/core/wall_measurement.hpp"
 
 namespace legofeup {
-
-/// Everything a pose estimator is tuned with; each filter takes what applies to it.
-struct PoseEstimatorSettings {
-    CovarianceLimits limits;
-    UkfParams ukf;
-};
 
 template <int M>
 using PoseUpdateReport = UpdateReport<M, kStateSize>;
@@ -50,11 +54,16 @@ class PoseEstimator {
 
     /// Sets x and P (conditioned). Returns false, changing nothing, if they are not finite.
     virtual bool reset(const StateVector& x, const StateCovariance& P) = 0;
+    /// The pose is unknown: a belief over the whole of the configured free space. Returns
+    /// false, changing nothing, when none was configured (or it is empty).
+    virtual bool reset_uniform() = 0;
 
     virtual const StateVector& state() const = 0;
     virtual const StateCovariance& covariance() const = 0;
     /// The repairs condition_covariance made at the last committed step (0: none).
     virtual std::uint8_t last_repairs() const = 0;
+    /// The particle cloud's summary after the last step (count 0: not a particle filter).
+    virtual ParticleSummary particles() const = 0;
 
     // Prediction, one overload per process model.
     virtual StepStatus predict(const OdometryProcessModel& model) = 0;
@@ -70,6 +79,12 @@ class PoseEstimator {
                                                                const MahalanobisGate& gate) = 0;
     virtual PoseUpdateReport<LaserPoseMeasurement::kSize> update(const LaserPoseMeasurement& model,
                                                                  const MahalanobisGate& gate) = 0;
+
+    /// Whether the filter weighs whole laser scans against the map's likelihood field (the
+    /// particle filter) rather than taking the ICP match as a pose observation.
+    virtual bool weighs_scans() const = 0;
+    /// A scan weighed against the likelihood field; NotAttempted unless weighs_scans().
+    virtual StepStatus update(const ScanLikelihood& scan) = 0;
 
     /// An update without a gate.
     template <class Model>

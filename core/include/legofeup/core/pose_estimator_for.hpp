@@ -9,6 +9,8 @@
 //   template predict(const Model&) -> StepStatus
 //   template update(const Model&, const MahalanobisGate&) -> UpdateReport<Model::kSize, 3>
 //   optionally set_params(const UkfParams&) (the UKF's spread)
+//   optionally configure(const PoseEstimatorSettings&), reset_uniform() and summary() (the
+//   particle filter: its own tuning, a cloud over the free space, the cloud's summary)
 
 #include "legofeup/core/pose_estimator.hpp"
 
@@ -23,15 +25,50 @@ class PoseEstimatorFor final : public PoseEstimator {
 
     FilterKind kind() const override { return kind_; }
     void configure(const PoseEstimatorSettings& settings) override {
-        filter_.set_limits(settings.limits);
-        if constexpr (requires { filter_.set_params(settings.ukf); }) {
-            filter_.set_params(settings.ukf);
+        free_space_ = settings.free_space;
+        if constexpr (requires { filter_.configure(settings); }) {
+            filter_.configure(settings);
+        } else {
+            filter_.set_limits(settings.limits);
+            if constexpr (requires { filter_.set_params(settings.ukf); }) {
+                filter_.set_params(settings.ukf);
+            }
         }
     }
 
     bool reset(const StateVector& x, const StateCovariance& P) override {
         return filter_.reset(x, P);
     }
+    bool reset_uniform() override {
+        if constexpr (requires { filter_.reset_uniform(); }) {
+            return filter_.reset_uniform();
+        } else {
+            // A Gaussian with the uniform's first two moments.
+            return free_space_ && !free_space_->empty()
+                   && filter_.reset(free_space_->mean(), free_space_->covariance());
+        }
+    }
+    ParticleSummary particles() const override {
+        if constexpr (requires { filter_.summary(); }) {
+            return filter_.summary();
+        } else {
+            return {};
+        }
+    }
+    bool weighs_scans() const override {
+        return requires(Filter & f, const ScanLikelihood& scan) {
+            f.update(scan);
+        };
+    }
+    StepStatus update(const ScanLikelihood& scan) override {
+        if constexpr (requires { filter_.update(scan); }) {
+            return filter_.update(scan);
+        } else {
+            return StepStatus::NotAttempted;
+        }
+    }
+    /// The filter itself (the views that draw a particle cloud read it).
+    const Filter& filter() const { return filter_; }
     const StateVector& state() const override { return filter_.state(); }
     const StateCovariance& covariance() const override { return filter_.covariance(); }
     std::uint8_t last_repairs() const override { return filter_.last_repairs(); }
@@ -64,6 +101,7 @@ class PoseEstimatorFor final : public PoseEstimator {
   private:
     FilterKind kind_;
     Filter filter_;
+    std::shared_ptr<const FreeSpace> free_space_;
 };
 
 }  // namespace legofeup
