@@ -61,7 +61,7 @@ void LegoFeupLoop::apply_tuning() {
     // so far; then both take the new ones.
     switch_kind(filter_, lesson.kind);
     switch_kind(shadow_, pose_estimator_entry(lesson.kind).shadow);
-    update_free_space();
+    update_map_models();
     estimator_settings_ = {tuning.limits, lesson.ukf, lesson.particles, config_.random_seed,
                            free_space_};
     filter_->configure(estimator_settings_);
@@ -73,15 +73,18 @@ void LegoFeupLoop::apply_tuning() {
 }
 
 // The free space and likelihood field take a pass over the map each (a building's map: a
-// few milliseconds), so they are built again only when the map changes.
-void LegoFeupLoop::update_free_space() {
+// few milliseconds), so they are built again only when the map changes — and the field only
+// once a filter weighs scans with it (the EKF and UKF match scans by ICP instead).
+void LegoFeupLoop::update_map_models() {
     const bool on_map = config_.lesson.localisation == Localisation::Laser && config_.map;
     const OccupancyGrid* map = on_map ? config_.map.get() : nullptr;
     const double max_distance = config_.lesson.particles.scan_model.max_distance;
-    if (map != nullptr
-        && (!likelihood_field_ || map != free_space_map_
+    const bool weighs_scans = filter_->weighs_scans() || shadow_->weighs_scans();
+    if (map != nullptr && weighs_scans
+        && (!likelihood_field_ || map != likelihood_field_map_
             || max_distance != likelihood_field_max_distance_)) {
         likelihood_field_ = std::make_shared<const LikelihoodField>(*map, max_distance);
+        likelihood_field_map_ = map;
         likelihood_field_max_distance_ = max_distance;
     }
     if (free_space_ && map == free_space_map_ && map != nullptr) {
@@ -384,8 +387,10 @@ void LegoFeupLoop::update_with_laser(PoseEstimator& filter, const SensorFrame& f
 // likelihood field. The report says a scan came and how the update went; ICP's parts stay
 // empty.
 void LegoFeupLoop::weigh_scan(PoseEstimator& filter, const LaserScan& scan, LaserUpdate& report) {
-    if (!likelihood_field_ || scan.beam_count != config_.lesson.laser.geometry.beam_count) {
-        report.wrong_beam_count = likelihood_field_ != nullptr;
+    // The field is built for the map in force once a filter weighs scans (update_map_models).
+    const bool field = likelihood_field_ && likelihood_field_map_ == config_.map.get();
+    if (!field || scan.beam_count != config_.lesson.laser.geometry.beam_count) {
+        report.wrong_beam_count = field;
         return;
     }
     const LaserTuning& laser = config_.lesson.laser;

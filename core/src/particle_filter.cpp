@@ -152,13 +152,8 @@ StepStatus ParticleFilter::apply_likelihoods(int dimension) {
     pending_inject_ = can_inject ? std::max(0.0, 1.0 - w_fast_ / w_slow_) : 0.0;
 
     // 4. Resample when the weights have degenerated.
-    double sum_squares = 0.0;
-    for (const double w : weight_) {
-        sum_squares += w * w;
-    }
-    const double effective = 1.0 / sum_squares;
     summary_.resampled = false;
-    if (effective < tuning_.resample_threshold * static_cast<double>(count)) {
+    if (effective_count() < tuning_.resample_threshold * static_cast<double>(count)) {
         resample(count);
         summary_.resampled = true;
     }
@@ -217,6 +212,14 @@ void ParticleFilter::inject_pending() {
     pending_inject_ = 0.0;
 }
 
+double ParticleFilter::effective_count() const {
+    double sum_squares = 0.0;
+    for (const double w : weight_) {
+        sum_squares += w * w;
+    }
+    return 1.0 / sum_squares;
+}
+
 StepStatus ParticleFilter::publish() {
     const std::size_t count = x_.size();
     // 5. x̄ = Σ wᵢ Xᵢ with θ̄ = atan2(Σ wᵢ sin θᵢ, Σ wᵢ cos θᵢ); P = Σ wᵢ (Xᵢ − x̄)(Xᵢ − x̄)ᵀ with
@@ -240,19 +243,17 @@ StepStatus ParticleFilter::publish() {
     const double heading =
         wrap_angle(reference + (ms == 0.0 && mc == 0.0 ? 0.0 : std::atan2(ms, mc)));
     StateCovariance P = StateCovariance::Zero();
-    double sum_squares = 0.0;
     double near = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         const double w = weight_[i];
         const StateVector d(x_[i] - mx, y_[i] - my, wrap_angle(theta_[i] - heading));
         P.noalias() += w * d * d.transpose();
-        sum_squares += w * w;
         if (d(kX) * d(kX) + d(kY) * d(kY) <= kNearMeanRadius * kNearMeanRadius) {
             near += w;
         }
     }
     summary_.count = static_cast<int>(count);
-    summary_.effective = 1.0 / sum_squares;
+    summary_.effective = effective_count();
     summary_.near_mean_share = near;
     summary_.w_slow = w_slow_;
     summary_.w_fast = w_fast_;

@@ -71,7 +71,7 @@ class LegoFeupLoop {
     void apply_tuning();
     /// Replaces `estimator` by one of `kind` (when it differs) that continues from its x and P.
     void switch_kind(std::unique_ptr<PoseEstimator>& estimator, FilterKind kind) const;
-    void update_free_space();
+    void update_map_models();
     void weigh_scan(PoseEstimator& filter, const LaserScan& scan, LaserUpdate& report);
     bool advance_odometry(const SensorFrame& frame);
     Eigen::Matrix2d skipped_motion_noise(double period) const;
@@ -99,9 +99,10 @@ class LegoFeupLoop {
     /// global localisation and the particle filter's recovery; rebuilt when the map changes.
     std::shared_ptr<const FreeSpace> free_space_;
     const OccupancyGrid* free_space_map_ = nullptr;
-    /// The laser map's likelihood field (the particle filter's laser model), built with
-    /// the free space; null without a map.
+    /// The laser map's likelihood field (the particle filter's laser model): null until a
+    /// filter weighs scans in a run with a map; `likelihood_field_map_` is the map it is of.
     std::shared_ptr<const LikelihoodField> likelihood_field_;
+    const OccupancyGrid* likelihood_field_map_ = nullptr;
     double likelihood_field_max_distance_ = 0.0;
     std::vector<Vector2> scan_endpoints_;  ///< this scan's, reused (no allocation in a step)
     std::unique_ptr<PoseEstimator> filter_;

@@ -111,6 +111,8 @@ class ParticleFilter : public FilterBase<PoseStateSpace> {
     void resample(std::size_t count);
     /// Step 0: the injection the last update decided (augmented MCL).
     void inject_pending();
+    /// N_eff = 1 / Σ wᵢ² of the weights now (steps 4 and 5).
+    double effective_count() const;
     /// Step 5: publishes the cloud's moments and summary.
     StepStatus publish();
     /// One pose from the free space (requires one).
