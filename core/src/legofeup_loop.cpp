@@ -535,10 +535,12 @@ void LegoFeupLoop::control_and_publish() {
     if (config_.lesson.compare_kinds && uses_pose_filter()) {
         s.shadow = {true, shadow_->kind(), shadow_->state(), shadow_->covariance()};
     }
-    // Control module on the updated estimate; eq. 1 turns (V, W) into wheel speeds.
-    const ControlOutput control =
-        run_controller(controller_, to_pose(s.estimate), config_.motion, config_.gains,
-                       config_.control_period, s.controller);
+    // Control module on the updated estimate (or on odometry, LoopConfig::steer_by); eq. 1
+    // turns (V, W) into wheel speeds.
+    const Pose2 steering =
+        config_.steer_by == SteeringPose::Odometry ? odometry_pose_ : to_pose(s.estimate);
+    const ControlOutput control = run_controller(
+        controller_, steering, config_.motion, config_.gains, config_.control_period, s.controller);
     s.velocity = control.command;
     s.wheels = limit_wheel_speeds(wheel_speeds(control.command, config_.odometry.wheel_base),
                                   config_.max_wheel_speed);

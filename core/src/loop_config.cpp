@@ -214,6 +214,19 @@ SharpIrCurve ir_sensor_curve(const LoopConfig& config, IrSensor sensor) {
     return own ? with_curve_parameters(config.ir_curve, *own) : config.ir_curve;
 }
 
+const char* to_string(SteeringPose pose) {
+    return pose == SteeringPose::Odometry ? "odometry" : "estimate";
+}
+
+std::optional<SteeringPose> steering_pose_from_string(std::string_view text) {
+    for (const SteeringPose pose : {SteeringPose::Estimate, SteeringPose::Odometry}) {
+        if (text == to_string(pose)) {
+            return pose;
+        }
+    }
+    return std::nullopt;
+}
+
 std::string ir_sensor_curve_name(IrSensor sensor) {
     return sensor == kFrontSensor ? "ir_curve.front" : "ir_curve.rear";
 }

@@ -8,6 +8,7 @@
 #include "legofeup_compass_lesson_resource.hpp"
 #include "legofeup_laser_lesson_resource.hpp"
 #include "legofeup_lesson_resource.hpp"
+#include "legofeup_mcl_lesson_resource.hpp"
 #include "legofeup_speeds_lesson_resource.hpp"
 
 namespace legofeup::lessons {
@@ -19,12 +20,13 @@ struct EmbeddedLesson {
 };
 
 // The explicit registry: the LegoFeup lesson first, then the related papers' lessons.
-const std::array<EmbeddedLesson, 5> kEmbeddedLessons{{
+const std::array<EmbeddedLesson, 6> kEmbeddedLessons{{
     {resources::kLegoFeupLesson, "lessons/legofeup.toml"},
     {resources::kBeaconsLesson, "lessons/beacons.toml"},
     {resources::kSpeedsLesson, "lessons/speeds.toml"},
     {resources::kCompassLesson, "lessons/compass.toml"},
     {resources::kLaserLesson, "lessons/laser.toml"},
+    {resources::kMclLesson, "lessons/mcl.toml"},
 }};
 
 const std::vector<Lesson>& parsed_built_in_lessons() {

@@ -210,6 +210,7 @@ ResolvedRun resolve_with(const RunConfig& config, sim::WorldSpec world,
     loop.motion = config.motion;
     loop.gains = config.gains;
     loop.controller = make_controller(config, run.world);
+    loop.steer_by = config.steer_by;
     loop.max_wheel_speed = config.max_wheel_speed;
     for (const ConfigIssue& issue : validate(loop)) {
         // A bad rectangle is reported once, as such, not again as its degenerate segments.

@@ -100,8 +100,9 @@ void add_initial_and_control_settings(std::vector<Setting>& s) {
          .label = in_words("unknown pose"),
          .help = tr_noop("the filter does not know where the robot starts (global "
                          "localisation): a particle filter spreads its cloud over the free "
-                         "space, an EKF or UKF takes its mean and covariance; x, y, heading "
-                         "and P0 are then unused"),
+                         "space, an EKF or UKF takes its mean and covariance; the filter then "
+                         "ignores x, y, heading and P0 (odometry still starts at x, y, "
+                         "heading)"),
          .page = SettingPage::InitialBelief,
          .applies = SettingApplies::NextStart,
          .use = kEveryRun},
@@ -132,6 +133,18 @@ void add_initial_and_control_settings(std::vector<Setting>& s) {
         }
     };
     s.push_back(routine);
+    s.push_back(choice(
+        {.key = "control.steer_by",
+         .field = "control.steer_by",
+         .label = in_words("steer by"),
+         .help = tr_noop("estimate (the paper's loop: the filter's estimate steers the robot) or "
+                         "odometry (the path is driven by dead reckoning from the start, "
+                         "whatever the filter believes: for global localisation)"),
+         .page = SettingPage::Controller,
+         .applies = SettingApplies::Live,
+         .use = kEveryRun},
+        {SteeringPose::Estimate, SteeringPose::Odometry}, steering_pose_from_string,
+        [](auto& c) -> auto& { return c.steer_by; }));
     s.push_back(real(
         {.key = "control.pause",
          .field = "controller.pause",

@@ -23,12 +23,13 @@ const LessonStep& step(const char* lesson, const char* id) {
 
 TEST(FurtherLessons, AreRegisteredInOrderAndReachableAsExperiments) {
     const std::vector<BuiltInLesson>& list = built_in_lessons();
-    ASSERT_EQ(list.size(), 5U);
+    ASSERT_EQ(list.size(), 6U);
     EXPECT_EQ(list[0].id, "legofeup");
     EXPECT_EQ(list[1].id, "beacons");
     EXPECT_EQ(list[2].id, "speeds");
     EXPECT_EQ(list[3].id, "compass");
     EXPECT_EQ(list[4].id, "laser");
+    EXPECT_EQ(list[5].id, "mcl");
     const Experiment* experiment = find_experiment("beacons:b");
     ASSERT_NE(experiment, nullptr);
     EXPECT_EQ(experiment->config.lesson.localisation, Localisation::Beacons);

@@ -20,11 +20,7 @@ namespace legofeup::lessons {
 namespace {
 
 const LessonStep& laser_step(const std::string& id) {
-    const Lesson* lesson = find_built_in_lesson("laser");
-    EXPECT_NE(lesson, nullptr);
-    const LessonStep* step = lesson->find_step(id);
-    EXPECT_NE(step, nullptr) << "laser:" << id;
-    return *step;
+    return built_in_step("laser", id);
 }
 
 TEST(LaserLesson, StepsAreExperimentsInTheOfficeWithTheScanner) {

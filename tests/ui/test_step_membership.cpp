@@ -31,11 +31,11 @@ std::set<std::string> as_set(const std::vector<std::string>& keys) {
 }
 
 TEST(StepMembership, TheExperimentIsTheWorldTheLocalisationAndTheSimulatedSensorsAndEvents) {
-    EXPECT_EQ(
-        as_set(experiment_keys()),
-        (std::set<std::string>{"world", "localisation.method", "beacon_scanner.enabled",
-                               "gyro.enabled", "accelerometers.enabled", "compass_sensor.enabled",
-                               "laser_scanner.enabled", "kidnap.enabled", "displacement.enabled"}));
+    EXPECT_EQ(as_set(experiment_keys()),
+              (std::set<std::string>{
+                  "world", "localisation.method", "filter.kind", "beacon_scanner.enabled",
+                  "gyro.enabled", "accelerometers.enabled", "compass_sensor.enabled",
+                  "laser_scanner.enabled", "kidnap.enabled", "displacement.enabled"}));
 }
 
 TEST(StepMembership, EveryBuiltInStepsPresetIsItsOwnStepsAndLeadsBackToIt) {

@@ -30,7 +30,7 @@ const std::vector<std::string>& experiment_keys() {
         std::vector<std::string> found;
         for (const lessons::Setting& setting : lessons::run_settings()) {
             if (setting.key == "world" || setting.key == "localisation.method"
-                || setting.key.ends_with(".enabled")) {
+                || setting.key == "filter.kind" || setting.key.ends_with(".enabled")) {
                 found.push_back(setting.key);
             }
         }

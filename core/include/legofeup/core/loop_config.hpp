@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "legofeup/core/beacons.hpp"
@@ -50,6 +51,16 @@ struct InitialBelief {
     bool unknown_pose = false;
 };
 
+/// The pose the path controller steers by. The estimate is the paper's loop (a wrong estimate
+/// steers the robot wrong, as on the real robot). Odometry is how a robot that has not been
+/// told where it stands drives a planned path: by dead reckoning from where it was put, while
+/// the filter finds out where that is (global localisation, lesson mcl) — the path is then
+/// driven whatever the estimate does, so a lost filter cannot drive the robot into a wall.
+enum class SteeringPose : std::uint8_t { Estimate, Odometry };
+
+const char* to_string(SteeringPose pose);  ///< "estimate", "odometry"
+std::optional<SteeringPose> steering_pose_from_string(std::string_view text);
+
 struct LoopConfig {
     OdometryParams odometry;
     IrMount ir_mount;
@@ -76,6 +87,7 @@ struct LoopConfig {
     MotionLimits motion;
     ControllerGains gains;
     Controller controller = FollowPath(square_path(ArenaSpec{}), 0);
+    SteeringPose steer_by = SteeringPose::Estimate;
     double max_wheel_speed = 0.38;  ///< m/s: ≈170 rpm on 43.2 mm wheels
     /// m: a wheel moving farther than this in one period is an encoder glitch (e.g. a
     /// counter reset on the robot); that period's odometry is skipped and flagged.

@@ -110,6 +110,7 @@ struct RunConfig {
     InitialBelief initial;      ///< P0; its pose is the world's start with `initial_pose`
     PoseOverride initial_pose;  ///< where the filter believes the robot starts
     RoutineSpec routine;
+    SteeringPose steer_by = SteeringPose::Estimate;  ///< what the controller steers by
     MotionLimits motion;
     ControllerGains gains;
     double max_wheel_speed = 0.38;

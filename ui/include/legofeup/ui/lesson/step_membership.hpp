@@ -1,12 +1,13 @@
 #pragma once
 // Whether a run's configuration is a lesson step's, and which step a configuration came from.
 //
-// A step is an experiment: a world, a way of correcting the odometry, and the sensors and
-// events the simulated robot has (experiment_keys()). Everything else — Q and R, the noise,
-// the routine and its length, the seed, the initial belief — is what students tune, and a run
-// tuned so still counts for the step. A configuration whose experiment differs from a step's
-// preset is not that step's, whatever step the Lesson dock shows: the laser lesson's run in
-// the office (`legofeup-cli config -e laser:a`) is not LegoFeup step f's.
+// A step is an experiment: a world, a way of correcting the odometry, the filter that does it
+// (EKF, UKF or particle filter: the mcl lesson's tracking step is the laser lesson's lap with
+// a particle filter), and the sensors and events the simulated robot has (experiment_keys()).
+// Everything else — Q and R, the noise, the routine and its length, the seed, the initial belief —
+// is what students tune, and a run tuned so still counts for the step. A configuration whose
+// experiment differs from a step's preset is not that step's, whatever step the Lesson dock shows:
+// the laser lesson's run in the office (`legofeup-cli config -e laser:a`) is not LegoFeup step f's.
 
 #include <cstddef>
 #include <string>
@@ -18,8 +19,8 @@
 namespace legofeup::ui {
 
 /// The settings (keys) that make a run one experiment and not another: the world, the
-/// localisation method, and every `enabled` of the simulated sensors and events (beacon
-/// scanner, gyroscope, accelerometers, compass, laser scanner, kidnapping, displacement).
+/// localisation method, the filter kind, and every `enabled` of the simulated sensors and events
+/// (beacon scanner, gyroscope, accelerometers, compass, laser scanner, kidnapping, displacement).
 const std::vector<std::string>& experiment_keys();
 
 /// The experiment keys in which `config` differs from `step`'s preset, in experiment_keys()
