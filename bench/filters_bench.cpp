@@ -3,7 +3,9 @@
 // The particle filter's parts per particle and step (items = particles, so items/s is the
 // particle-steps per second): motion sampling, the wall lesson's IR update, four bearing
 // updates (PythonRobotics' particle filter, 4 range landmarks and 100 particles, measured
-// 22.6 µs a particle-step on this machine kind), and a whole wall-lesson period.
+// 22.6 µs a particle-step on this machine kind), a whole wall-lesson period, and the cloud
+// the GUI is sent each step (sample_cloud: the live run's worker thins 10,000 particles to
+// kParticlesShown).
 // Run from a release build:
 //   build/release/bench/legofeup_filters_bench
 // Each benchmark repeats 10 times and reports mean / median / stddev; quote the median.
@@ -16,6 +18,7 @@
 #include "legofeup/core/extended_kalman_filter.hpp"
 #include "legofeup/core/ir_geometry.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
+#include "legofeup/core/particle_cloud.hpp"
 #include "legofeup/core/particle_filter.hpp"
 #include "legofeup/core/pose_state_space.hpp"
 #include "legofeup/core/unscented_kalman_filter.hpp"
@@ -122,10 +125,26 @@ void BM_PfWallLessonPeriod(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
+// The cloud a live run sends with every sample: N particles thinned to kParticlesShown, into
+// a vector the worker keeps (no allocation once it has grown).
+void BM_PfSampleCloud(benchmark::State& state) {
+    ParticleFilter filter = particle_filter_of(state);
+    filter.update(first_wall());  // unequal weights, as after a scan
+    std::vector<ParticlePoint> cloud;
+    for (auto _ : state) {
+        thin_particles(filter.xs(), filter.ys(), filter.thetas(), filter.weights(), kParticlesShown,
+                       cloud);
+        benchmark::DoNotOptimize(cloud.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
 BENCHMARK(BM_PfMotionSampling)->Arg(1000)->Arg(10000)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PfWallUpdate)->Arg(1000)->Arg(10000)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PfFourBearings)->Arg(100)->Arg(1000)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PfWallLessonPeriod)->Arg(1000)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_PfSampleCloud)->Arg(1000)->Arg(10000)->Repetitions(5)->ReportAggregatesOnly(true);
 
 }  // namespace
 

@@ -18,7 +18,7 @@ cd "$(dirname "$0")/.."
 #       ARGS give one), its settings directory holding only PREFERENCES: comma-separated
 #       group/key=value of ui/include/legofeup/ui/window/app_settings.hpp, or - for none.
 #       view/plotTab: 0 Estimate, 1 Commands & sensors, 2 Consistency, 3 Beacons & filters,
-#       4 Heading & speed sensors, 5 Laser scan matching; view/plotWindow: seconds, 0 the
+#       4 Heading & speed sensors, 5 Laser scan matching, 6 Particle filter; view/plotWindow: seconds, 0 the
 #       whole run; link/kind=2 with nxt/emulated=true: the emulated brick.
 #   FILE test PROGRAM FUNCTION  the QtTest PROGRAM's test FUNCTION, which saves FILE.
 # tests/docs/check_doc_images.cmake reads this table: the pictures the docs show are exactly
@@ -34,6 +34,7 @@ heading-sensors.png            app view/plotTab=4,view/plotWindow=0 --experiment
 laser-lesson.png               app view/plotTab=5                   --experiment laser:a --speed 2 --start --screenshot-at 60
 laser-twin-hall.png            app -                                --experiment laser:c --speed 2 --start --screenshot-at 45
 laser-far-kidnap.png           app -                                --experiment laser:d --speed 2 --start --screenshot-at 53
+mcl-global.png                 app view/plotTab=6,view/plotWindow=0 --experiment mcl:a --speed 1 --start --screenshot-at 1.2
 nxt-connect.png                test ui_connect_dialog_test scanningWithoutBlueZSaysSoAtOnceAndReturns
 lesson-panel.png               test ui_lesson_panel_test theConclusionIsHiddenUntilTheRunFinishesThenShownWithTheRunsOwnNumbers
 refilter.png                   test ui_refilter_dialog_test changingQGivesASecondEstimateOnTheSameReadings

@@ -25,6 +25,7 @@ void ParticleFilter::configure(const PoseEstimatorSettings& settings) {
     tuning_ = settings.particles;
     if (count != x_.size()) {
         resample(count);  // the same distribution, in the new number of particles
+        weighed_effective_ = 0.0;
         publish();
     }
 }
@@ -44,6 +45,7 @@ bool ParticleFilter::start_cloud(Draw&& draw) {
     w_slow_ = 0.0;
     w_fast_ = 0.0;
     pending_inject_ = 0.0;
+    weighed_effective_ = 0.0;
     summary_ = {};
     return publish() == StepStatus::Applied;
 }
@@ -151,9 +153,11 @@ StepStatus ParticleFilter::apply_likelihoods(int dimension) {
     const bool can_inject = tuning_.recovery && free_space_ && !free_space_->empty();
     pending_inject_ = can_inject ? std::max(0.0, 1.0 - w_fast_ / w_slow_) : 0.0;
 
-    // 4. Resample when the weights have degenerated.
+    // 4. Resample when the weights have degenerated. The N_eff published is this one: after
+    // a resampling the weights are equal and 1/Σwᵢ² is N, which would hide what the scan told.
+    weighed_effective_ = effective_count();
     summary_.resampled = false;
-    if (effective_count() < tuning_.resample_threshold * static_cast<double>(count)) {
+    if (weighed_effective_ < tuning_.resample_threshold * static_cast<double>(count)) {
         resample(count);
         summary_.resampled = true;
     }
@@ -253,7 +257,7 @@ StepStatus ParticleFilter::publish() {
         }
     }
     summary_.count = static_cast<int>(count);
-    summary_.effective = effective_count();
+    summary_.effective = weighed_effective_ > 0.0 ? weighed_effective_ : effective_count();
     summary_.near_mean_share = near;
     summary_.w_slow = w_slow_;
     summary_.w_fast = w_fast_;

@@ -42,7 +42,7 @@ const std::vector<SettingPage>& setting_pages() {
 const char* setting_page_title(SettingPage page) {
     switch (page) {
         case SettingPage::Filter:
-            return tr_noop("Filter: Q and R, EKF or UKF");
+            return tr_noop("Filter: Q and R; EKF, UKF or particle filter");
         case SettingPage::Localisation:
             return tr_noop("Localisation and the lessons' filters");
         case SettingPage::Laser:

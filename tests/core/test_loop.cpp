@@ -120,6 +120,41 @@ TEST(LegoFeupLoop, WallUpdatesCorrectTheSystematicOdometryErrors) {
     EXPECT_LT(position_error(last.truth, last.snapshot.estimate), odometry_error / 4.0);
 }
 
+// steer_by = Odometry: the controller steers by dead reckoning whatever the filter says. With
+// the robot's systematic errors the wall updates move the estimate centimetres away from
+// odometry, so a run with updates and one without must still command the very same wheels,
+// step for step — while steering by the estimate, the same updates change the commands.
+TEST(LegoFeupLoop, SteeringByOdometryDrivesThePathWhateverTheEstimateDoes) {
+    LoopConfig by_odometry;
+    by_odometry.steer_by = SteeringPose::Odometry;
+    LoopConfig by_odometry_without_walls = by_odometry;
+    by_odometry_without_walls.filter.wall_updates = false;
+    const auto with_walls = run(by_odometry, systematic_errors(), kTwoLaps / 2);
+    const auto without_walls = run(by_odometry_without_walls, systematic_errors(), kTwoLaps / 2);
+    const auto by_estimate = run(LoopConfig{}, systematic_errors(), kTwoLaps / 2);
+    ASSERT_EQ(with_walls.size(), without_walls.size());
+    ASSERT_EQ(with_walls.size(), by_estimate.size());
+    double estimates_apart = 0.0;
+    double commands_apart = 0.0;
+    int updates = 0;
+    for (std::size_t k = 0; k < with_walls.size(); ++k) {
+        const LoopSnapshot& a = with_walls[k].snapshot;
+        const LoopSnapshot& b = without_walls[k].snapshot;
+        ASSERT_EQ(a.wheels.right, b.wheels.right) << k;
+        ASSERT_EQ(a.wheels.left, b.wheels.left) << k;
+        updates += a.update.status == StepStatus::Applied ? 1 : 0;
+        estimates_apart = std::max(estimates_apart, (a.estimate - b.estimate).head<2>().norm());
+        const LoopSnapshot& c = by_estimate[k].snapshot;
+        commands_apart = std::max(commands_apart, std::abs(a.wheels.right - c.wheels.right)
+                                                      + std::abs(a.wheels.left - c.wheels.left));
+    }
+    // The premise: the walls were used and moved the estimate off dead reckoning …
+    EXPECT_GT(updates, 100);
+    EXPECT_GT(estimates_apart, 0.02);
+    // … and steering by that estimate would have driven otherwise.
+    EXPECT_GT(commands_apart, 1e-3);
+}
+
 /// How far apart two headings are on the circle: |wrap(a − b)|, so that π − 0.001 and
 /// −π + 0.001 are 0.002 apart, not 2π − 0.002.
 double heading_gap(double a, double b) {

@@ -97,6 +97,40 @@ TEST(ParticleFilter, LowVarianceResamplingGivesEachParticleItsExpectedCopies) {
     }
 }
 
+TEST(ParticleFilter, PublishesTheUpdatesEffectiveSampleSizeEvenWhenItResampled) {
+    // After a resampling the weights are equal and 1/Σwᵢ² is N; the summary must keep the
+    // N_eff of the update's own weights, (Σ pᵢ)² / Σ pᵢ² for likelihoods pᵢ on equal priors,
+    // through the predictions that follow, until the next update or a new cloud.
+    constexpr int kCount = 10;
+    const std::array<double, kCount> logl{0.0, -0.5, -3.0, 0.7, -1.2, -0.1, -9.0, 0.2, -0.4, -2.0};
+    double sum = 0.0;
+    double sum_squares = 0.0;
+    for (const double l : logl) {
+        sum += std::exp(l);
+        sum_squares += std::exp(2.0 * l);
+    }
+    const double expected = sum * sum / sum_squares;  // ≈ 5.5 of 10
+    PoseEstimatorSettings settings = settings_with(kCount);
+    settings.particles.resample_threshold = 1.0;
+    ParticleFilter filter;
+    filter.configure(settings);
+    filter.reset(StateVector(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 1.0, 0.1).asDiagonal());
+    EXPECT_NEAR(filter.summary().effective, kCount, 1e-9);  // a new cloud: equal weights
+    std::map<double, std::size_t> index_of;
+    for (std::size_t i = 0; i < kCount; ++i) {
+        index_of[filter.xs()[i]] = i;
+    }
+    ASSERT_EQ(filter.weigh([&](double x, double, double) { return logl[index_of.at(x)]; }, 1),
+              StepStatus::Applied);
+    ASSERT_TRUE(filter.summary().resampled);
+    ASSERT_LT(expected, 0.9 * kCount);
+    EXPECT_NEAR(filter.summary().effective, expected, 1e-9);
+    ASSERT_EQ(filter.predict(straight(0.01, 0.0, 1e-6, 1e-6)), StepStatus::Applied);
+    EXPECT_NEAR(filter.summary().effective, expected, 1e-9);
+    filter.reset(StateVector(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 1.0, 0.1).asDiagonal());
+    EXPECT_NEAR(filter.summary().effective, kCount, 1e-9);
+}
+
 TEST(ParticleFilter, PublishesTheCloudsWeightedMeanOnTheCircleAndItsCovariance) {
     ParticleFilter filter = filter_with(500);
     // Headings around π: a plain average would point the other way.

@@ -173,11 +173,16 @@ TEST(ArenaLayerRegistry, ListsEveryLocalisationOnceAndEachLessonsLayers) {
                 << built_in.id << ":" << step.id << " " << to_string(localisation);
         }
     }
-    EXPECT_EQ(layer_names(Localisation::Walls), std::set<std::string>{"IR rays"});
-    EXPECT_EQ(layer_names(Localisation::Beacons), std::set<std::string>{"beacons"});
-    EXPECT_EQ(layer_names(Localisation::Laser), std::set<std::string>{"laser scans"});
+    // The particle cloud goes with every localisation a particle filter can run (the
+    // 5-state fusion is an EKF of its own).
+    EXPECT_EQ(layer_names(Localisation::Walls),
+              (std::set<std::string>{"particle cloud", "IR rays"}));
+    EXPECT_EQ(layer_names(Localisation::Beacons),
+              (std::set<std::string>{"particle cloud", "beacons"}));
+    EXPECT_EQ(layer_names(Localisation::Laser),
+              (std::set<std::string>{"particle cloud", "laser scans"}));
     EXPECT_TRUE(layer_names(Localisation::GyroFusion).empty());
-    EXPECT_TRUE(layer_names(Localisation::Compass).empty());
+    EXPECT_EQ(layer_names(Localisation::Compass), std::set<std::string>{"particle cloud"});
     EXPECT_TRUE(layers_for(ArenaLayerRegistry{}, Localisation::Walls).empty());
 }
 

@@ -7,6 +7,7 @@
 
 #include <QAction>
 #include <QImage>
+#include <QLocale>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -388,6 +389,37 @@ class TestLaserViews : public QObject {
         const auto early = make_view(before_recovery);
         QCOMPARE(early->laserStatusText(),
                  QStringLiteral("mismatch ×5 · %1 pts").arg(kMismatchPoints));
+    }
+
+    void aParticleFiltersScanIsWeighedNotMatched() {
+        // The particle filter runs no ICP: its scans say how much weight survived instead of
+        // "ICP matched 0 pts", and a refused update says so rather than "mismatch".
+        const auto as_particle_filter = [](bool applied) {
+            const RunHistory matched = laser_history(kFirstMismatch);
+            std::vector<RunSample> samples = testing::whole_samples(matched);
+            for (RunSample& sample : samples) {
+                LoopSnapshot& s = sample.snapshot;
+                s.filter_kind = FilterKind::Pf;
+                s.particles.count = 10000;
+                s.particles.effective = 6320.4;
+                s.laser.icp = IcpResult{};
+                s.laser.measured_points = 91;
+                s.laser.matched = applied && s.laser.scan_received;
+                s.laser.status =
+                    s.laser.matched ? StepStatus::Applied : StepStatus::RejectedNonFinite;
+            }
+            RunHistory history;
+            history.restart(matched.scene());
+            history.append(std::move(samples));
+            return history;
+        };
+        const RunHistory weighed = as_particle_filter(true);
+        const QLocale locale;
+        QCOMPARE(make_view(weighed)->laserStatusText(),
+                 QStringLiteral("scan weighed · N_eff %1 of %2")
+                     .arg(locale.toString(6320), locale.toString(10000)));
+        QCOMPARE(make_view(as_particle_filter(false))->laserStatusText(),
+                 QStringLiteral("scan not weighed (refused)"));
     }
 
     void aWallRunDrawsNoScan() {

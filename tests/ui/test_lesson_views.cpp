@@ -1,7 +1,8 @@
-// The views adapting to the further lessons (issue 8): beacons, bearing rays and the second
-// filter's estimate in the arena; the bearing, heading-sensor, wheel-speed and EKF/UKF plots
-// shown only when the run has their data; the configuration panel greying what the
-// localisation does not use, and EKF/UKF switched live from it.
+// The views adapting to the further lessons (issue 8): beacons, bearing rays, the second
+// filter's estimate and the particle cloud in the arena; the bearing, heading-sensor,
+// wheel-speed, EKF/UKF/PF and particle plots shown only when the run has their data; the
+// configuration panel greying what the localisation does not use, and EKF/UKF switched live from
+// it.
 
 #include <QComboBox>
 #include <QImage>
@@ -145,6 +146,53 @@ RunHistory sensor_history() {
     return history;
 }
 
+/// Offsets from the estimate of the particle history's two clusters, m.
+const Vector2 kHeavyCluster(0.35, 0.25);
+const Vector2 kLightCluster(-0.45, 0.3);
+constexpr int kParticleCount = 5000;
+constexpr float kLightWeight = 0.1F;
+
+/// The first kSamples of a wall lap as a particle filter's (filter.kind = "pf") with an EKF
+/// beside it: each sample's cloud in two clusters off the estimate, the heavy one at full
+/// weight, the light one at kLightWeight; N_eff falls from 5,000 by one a
+/// step.
+RunHistory particle_history() {
+    std::vector<RunSample> samples(one_lap_samples().begin(), one_lap_samples().begin() + kSamples);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        LoopSnapshot& s = samples[i].snapshot;
+        s.filter_kind = FilterKind::Pf;
+        s.particles.count = kParticleCount;
+        s.particles.effective = kParticleCount - static_cast<double>(i);
+        s.shadow.active = true;
+        s.shadow.kind = FilterKind::Ekf;
+        s.shadow.estimate = s.estimate;
+        s.shadow.estimate(kX) += kShadowOffset.x();
+        s.shadow.estimate(kY) += kShadowOffset.y();
+        s.shadow.covariance = s.covariance;
+        s.filter_seconds = 200e-6;
+        s.shadow_filter_seconds = 20e-6;
+        auto cloud = std::make_shared<std::vector<ParticlePoint>>();
+        for (int k = 0; k < 400; ++k) {
+            // Heavy: on top of one another (copies after a resampling); light: 5 cm apart on
+            // a 20 × 10 grid from kLightCluster, so that no dot covers another (overlapping
+            // faint dots add up to an opaque one, as a dense cluster does on screen).
+            const bool heavy = k % 2 == 0;
+            const int j = k / 2;
+            const Vector2 at = heavy ? kHeavyCluster
+                                     : Vector2(kLightCluster.x() + 0.05 * (j % 20),
+                                               kLightCluster.y() + 0.05 * (j / 20));
+            cloud->push_back({static_cast<float>(s.estimate(kX) + at.x()),
+                              static_cast<float>(s.estimate(kY) + at.y()), 0.0F,
+                              heavy ? 1.0F : kLightWeight});
+        }
+        samples[i].particles = std::move(cloud);
+    }
+    RunHistory history;
+    history.restart(one_lap().scene());
+    history.append(std::move(samples));
+    return history;
+}
+
 using testing::nearest_colour_distance;
 using testing::render;
 
@@ -193,7 +241,8 @@ int visible_tabs(const PlotsPanel& panel) {
 
 constexpr PlotKind kLessonPlots[] = {PlotKind::Bearings,    PlotKind::HeadingSensors,
                                      PlotKind::TurnRate,    PlotKind::WheelSpeedEstimates,
-                                     PlotKind::ShadowError, PlotKind::FilterCost};
+                                     PlotKind::ShadowError, PlotKind::FilterCost,
+                                     PlotKind::Particles};
 
 }  // namespace
 
@@ -221,7 +270,8 @@ class TestLessonViews : public QObject {
         QVERIFY(legend.contains(QStringLiteral("IR rays used; the wall matched")));
         for (const QString& text : legend) {
             QVERIFY2(!text.contains(QStringLiteral("beacon")) && !text.contains("bearing")
-                         && !text.contains(QStringLiteral("UKF")),
+                         && !text.contains(QStringLiteral("UKF"))
+                         && !text.contains(QStringLiteral("particle")),
                      qPrintable(text));
         }
         // Where the beacon lesson's beacon 3 would be: no beacon colour.
@@ -266,6 +316,39 @@ class TestLessonViews : public QObject {
         QVERIFY(!legend.contains(QStringLiteral("IR rays used; the wall matched")));
     }
 
+    void theParticleCloudIsDrawnWithItsWeightAsOpacity() {
+        const RunHistory history = particle_history();
+        const auto view = make_view(history);
+        const QImage image = render(*view);
+        const ArenaColors colors = arena_colors(view->palette());
+        const QTransform t = view->worldToWidget();
+        const StateVector& x = history.latest().snapshot.estimate;
+        const QPointF heavy = t.map(QPointF(x(kX) + kHeavyCluster.x(), x(kY) + kHeavyCluster.y()));
+        const QPointF light = t.map(QPointF(x(kX) + kLightCluster.x(), x(kY) + kLightCluster.y()));
+        // The heavy particles opaque; the light ones in the faintest band (alpha 70).
+        QVERIFY(nearest_colour_distance(image, heavy, colors.particles) <= 8);
+        const QColor faint = blend(colors.particles, 70, colors.background);
+        QVERIFY(nearest_colour_distance(image, light, faint) <= 24);
+        QVERIFY(nearest_colour_distance(image, light, colors.particles) > 40);
+        QVERIFY(view->legendTexts().contains(
+            QStringLiteral("particles: the fainter, the less weight")));
+        QVERIFY(view->legendTexts().contains(QStringLiteral("estimate (PF)")));
+
+        // The same run without its clouds (an EKF's): nothing there.
+        RunHistory gaussian;
+        gaussian.restart(history.scene());
+        std::vector<RunSample> samples = testing::whole_samples(history);
+        for (RunSample& sample : samples) {
+            sample.particles.reset();
+            sample.snapshot.particles = {};
+        }
+        gaussian.append(std::move(samples));
+        const auto plain = make_view(gaussian);
+        QVERIFY(nearest_colour_distance(render(*plain), heavy, colors.particles) > 40);
+        QVERIFY(!plain->legendTexts().contains(
+            QStringLiteral("particles: the fainter, the less weight")));
+    }
+
     void withoutTheShadowNoSecondEstimate() {
         const RunHistory history = beacon_history(false);
         const auto view = make_view(history);
@@ -288,6 +371,7 @@ class TestLessonViews : public QObject {
             const ArenaColors colors = arena_colors(palette);
             QVERIFY(contrast_ratio(colors.beacon, colors.background) >= 4.5);
             QVERIFY(contrast_ratio(colors.shadow, colors.background) >= 4.5);
+            QVERIFY(contrast_ratio(colors.particles, colors.background) >= 4.5);
         }
     }
 
@@ -360,6 +444,42 @@ class TestLessonViews : public QObject {
         QVERIFY(std::abs(ekf_costs->at(ekf_costs->size() - 1)->value - ekf_cost) < kRecorded);
         QVERIFY(std::abs(ukf_costs->at(ukf_costs->size() - 1)->value - ukf_cost) < kRecorded);
         QVERIFY(std::abs(ekf_costs->at(0)->value - 20.0) < kRecorded);  // the first value as is
+    }
+
+    void particleRunPlotsItsCloudAndThePfBesideTheEkf() {
+        const RunHistory history = particle_history();
+        PlotsPanel panel(history);
+        QVERIFY(panel.plotShown(PlotKind::Particles));
+        QVERIFY(panel.plotShown(PlotKind::ShadowError));
+        QVERIFY(panel.plotShown(PlotKind::FilterCost));
+        QVERIFY(!panel.plotShown(PlotKind::Bearings));
+        QCOMPARE(visible_tabs(panel), 5);  // the three, the filters' and the particles'
+        const auto count = panel.graph(Series::ParticleCount)->data();
+        const auto effective = panel.graph(Series::ParticleEffective)->data();
+        QCOMPARE(count->size(), static_cast<int>(kSamples));
+        QCOMPARE(effective->size(), static_cast<int>(kSamples));
+        for (int i = 0; i < count->size(); i += 23) {
+            QCOMPARE(count->at(i)->value, static_cast<double>(kParticleCount));
+            QCOMPARE(effective->at(i)->value, static_cast<double>(kParticleCount - i));
+        }
+        // The PF is the primary here, the EKF the shadow: each error from its own estimate.
+        const auto pf = panel.graph(Series::PfPositionError)->data();
+        const auto ekf = panel.graph(Series::EkfPositionError)->data();
+        QCOMPARE(pf->size(), static_cast<int>(kSamples));
+        QCOMPARE(ekf->size(), static_cast<int>(kSamples));
+        QCOMPARE(panel.graph(Series::UkfPositionError)->dataCount(), 0);
+        const RunSample& last = history.latest();
+        const StateVector& x = last.snapshot.estimate;
+        const Pose2& truth = last.truth->pose;
+        const int k = static_cast<int>(kSamples) - 1;
+        QVERIFY(std::abs(pf->at(k)->value - std::hypot(x(kX) - truth.x, x(kY) - truth.y)) < 1e-12);
+        QVERIFY(std::abs(ekf->at(k)->value
+                         - std::hypot(x(kX) + kShadowOffset.x() - truth.x,
+                                      x(kY) + kShadowOffset.y() - truth.y))
+                < kRecorded);
+        const auto pf_cost = panel.graph(Series::PfCost)->data();
+        QVERIFY(std::abs(pf_cost->at(pf_cost->size() - 1)->value - 200.0) < 1e-3);
+        // A Gaussian filter's run has no particle plot (wallRunHasNoLessonPlots).
     }
 
     void withoutTheShadowNoComparisonPlots() {

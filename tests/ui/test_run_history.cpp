@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -129,6 +130,38 @@ TEST(RunHistory, BeforeTheRecentRunOneWholeSampleASecondIsKept) {
     EXPECT_NEAR(static_cast<double>(kept_before_recent), older_seconds / RunHistory::kKeptPeriod,
                 1.0);
     EXPECT_EQ(history.samples_kept(), kept_before_recent + RunHistory::kRecentSamples);
+}
+
+TEST(RunHistory, ParticleCloudsAreKeptForTheRecentSamplesOnly) {
+    // A particle filter's run: every sample with a cloud of kParticlesShown points. 30
+    // minutes of them would be 576 MB; the history keeps those of the recent samples.
+    RunHistory history;
+    history.restart({});
+    const std::size_t steps = 3000;  // 150 s
+    for (std::size_t first = 0; first < steps; first += 2) {
+        std::vector<RunSample> batch = synthetic_batch(first, 2);
+        for (RunSample& sample : batch) {
+            sample.snapshot.particles.count = 10000;
+            sample.particles = std::make_shared<const std::vector<ParticlePoint>>(
+                kParticlesShown, ParticlePoint{1.0F, 2.0F, 0.0F, 1.0F});
+        }
+        history.append(std::move(batch));
+    }
+    std::size_t older_kept = 0;
+    for (std::size_t i = 0; i < history.recent_begin(); ++i) {
+        if (const RunSample* sample = history.sample(i)) {
+            ++older_kept;
+            EXPECT_EQ(sample->particles, nullptr) << i;  // kept for its scan, not its cloud
+        }
+    }
+    EXPECT_GT(older_kept, 100U);  // one a second of the first 120 s
+    for (std::size_t i = history.recent_begin(); i < steps; ++i) {
+        ASSERT_NE(history.sample(i)->particles, nullptr) << i;
+    }
+    EXPECT_EQ(history.bytes().particles,
+              RunHistory::kRecentSamples * kParticlesShown * sizeof(ParticlePoint));
+    EXPECT_EQ(history.bytes().total(), history.bytes().records + history.bytes().samples
+                                           + history.bytes().trace + history.bytes().particles);
 }
 
 TEST(RunHistory, TheLatestBatchIsWholeHoweverLarge) {

@@ -60,6 +60,8 @@ ArenaColors arena_colors(const QPalette& palette) {
     colors.beacon = dark ? QColor(0xff, 0xd5, 0x4f) : QColor(0x6d, 0x4c, 0x41);  // amber / brown
     colors.shadow = dark ? QColor(0xce, 0x93, 0xd8) : QColor(0x6a, 0x1b, 0x9a);  // purple
     colors.out_of_range = with_alpha(colors.foreground, 130);
+    // Blue grey: quieter than the estimate's blue and the truth's green it surrounds.
+    colors.particles = dark ? QColor(0xb0, 0xbe, 0xc5) : QColor(0x37, 0x47, 0x4f);
     // The map: walls nearly as strong as the arena's walls, unknown space a light grey (both
     // opaque mixes, drawn once per run into the map's picture).
     colors.map_occupied = mix(colors.foreground, colors.background, 0.78);

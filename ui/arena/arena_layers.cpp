@@ -8,14 +8,17 @@ namespace legofeup::ui {
 const ArenaLayer& ir_rays_layer();      // ir_rays_layer.cpp: the LegoFeup lesson (paper 000)
 const ArenaLayer& beacons_layer();      // beacons_layer.cpp: bearing-only beacons (paper 002)
 const ArenaLayer& laser_scans_layer();  // laser_scans_layer.cpp: the laser lesson (paper 001)
+// particle_cloud_layer.cpp: the particle filter's cloud, whatever the robot measures (it draws
+// nothing for a Gaussian filter's run).
+const ArenaLayer& particle_cloud_layer();
 
 const ArenaLayerRegistry& built_in_arena_layers() {
     static const ArenaLayerRegistry registry{
-        {Localisation::Walls, {&ir_rays_layer()}},
-        {Localisation::Beacons, {&beacons_layer()}},
+        {Localisation::Walls, {&particle_cloud_layer(), &ir_rays_layer()}},
+        {Localisation::Beacons, {&particle_cloud_layer(), &beacons_layer()}},
         {Localisation::GyroFusion, {}},  // its sensors have nothing to show in the arena
-        {Localisation::Compass, {}},
-        {Localisation::Laser, {&laser_scans_layer()}},
+        {Localisation::Compass, {&particle_cloud_layer()}},
+        {Localisation::Laser, {&particle_cloud_layer(), &laser_scans_layer()}},
     };
     return registry;
 }

@@ -62,12 +62,19 @@ LaserScanPoints laser_scan_points(const RunSample& sample, const LaserScene& sce
     return points;
 }
 
-QString laser_status_text(const LaserUpdate& update, const LaserScene& scene) {
+QString laser_status_text(const LoopSnapshot& snapshot, const LaserScene& scene) {
+    const LaserUpdate& update = snapshot.laser;
     if (!update.scan_received) {
         return {};
     }
     if (update.wrong_beam_count) {
         return arena_text::tr("scan skipped: %1 beams expected").arg(scene.geometry.beam_count);
+    }
+    if (snapshot.particles.count > 0) {
+        return update.matched ? arena_text::tr("scan weighed · N_eff %L1 of %L2")
+                                    .arg(snapshot.particles.effective, 0, 'f', 0)
+                                    .arg(snapshot.particles.count)
+                              : arena_text::tr("scan not weighed (refused)");
     }
     if (update.recovery_active) {
         return arena_text::tr("recovery: P×%1 · mismatch ×%2")
@@ -99,7 +106,7 @@ QString latest_laser_status_text(const RunHistory& history) {
         return {};
     }
     const RunSample* sample = latest_scan_sample(history);
-    return sample != nullptr ? laser_status_text(sample->snapshot.laser, scene.laser) : QString();
+    return sample != nullptr ? laser_status_text(sample->snapshot, scene.laser) : QString();
 }
 
 }  // namespace legofeup::ui

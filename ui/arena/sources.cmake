@@ -21,6 +21,7 @@ list(APPEND LEGOFEUP_UI_SOURCES
     arena/legend_rows.cpp
     arena/map_image.cpp
     arena/map_pictures.cpp
+    arena/particle_cloud_layer.cpp
     arena/pose_picker.cpp
     arena/thinned_polyline.cpp
     arena/world_camera.cpp

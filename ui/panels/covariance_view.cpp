@@ -177,7 +177,16 @@ void CovarianceView::showLaserUpdate() {
     }
     const double time = sample->snapshot.time;
     const LaserUpdate& laser = sample->snapshot.laser;
-    if (laser.status == StepStatus::Applied) {
+    const ParticleSummary& particles = sample->snapshot.particles;
+    if (particles.count > 0 && laser.status == StepStatus::Applied) {
+        // The particle filter weighs the scan's end points in the likelihood field: no ICP,
+        // no innovation, no NIS; what tells how it went is how much weight survived.
+        update_->setText(tr("t = %1 s: scan weighed (%2 points), N_eff %L3 of %L4 particles")
+                             .arg(time, 0, 'f', 2)
+                             .arg(laser.measured_points)
+                             .arg(particles.effective, 0, 'f', 0)
+                             .arg(particles.count));
+    } else if (laser.status == StepStatus::Applied) {
         update_->setText(tr("t = %1 s: scan matched (%2 pts), V = (%3 cm, %4 cm, %5°), NIS %6")
                              .arg(time, 0, 'f', 2)
                              .arg(laser.icp.matched_points)
@@ -188,7 +197,7 @@ void CovarianceView::showLaserUpdate() {
     } else {
         update_->setText(tr("t = %1 s: prediction only (%2)")
                              .arg(time, 0, 'f', 2)
-                             .arg(laser_status_text(laser, history_.scene().laser)));
+                             .arg(laser_status_text(sample->snapshot, history_.scene().laser)));
     }
 }
 

@@ -31,6 +31,9 @@ constexpr int kColourCompass = 3;
 constexpr int kColourFused = 4;
 constexpr int kColourEkf = 0;
 constexpr int kColourUkf = 1;
+constexpr int kColourPf = 3;
+constexpr int kColourParticleCount = 0;
+constexpr int kColourParticleEffective = 3;
 constexpr int kColourApplied = 0;
 constexpr int kColourGated = 1;
 /// µs per step: a ~1 s exponential average at 20 Hz (a = 1/20).
@@ -271,6 +274,9 @@ std::optional<double> ekf_position_error(const StepRecord& s) {
 std::optional<double> ukf_position_error(const StepRecord& s) {
     return position_error_of(s, FilterKind::Ukf);
 }
+std::optional<double> pf_position_error(const StepRecord& s) {
+    return position_error_of(s, FilterKind::Pf);
+}
 std::optional<double> cost_of(const StepRecord& s, FilterKind kind) {
     const std::optional<KindEstimate> of = estimate_of(s, kind);
     if (!of || !std::isfinite(of->seconds)) {
@@ -283,6 +289,16 @@ std::optional<double> ekf_cost(const StepRecord& s) {
 }
 std::optional<double> ukf_cost(const StepRecord& s) {
     return cost_of(s, FilterKind::Ukf);
+}
+std::optional<double> pf_cost(const StepRecord& s) {
+    return cost_of(s, FilterKind::Pf);
+}
+// ---- the particle filter: its cloud ------------------------------------------------------
+std::optional<double> particle_count(const StepRecord& s) {
+    return s.particle_count > 0 ? std::optional<double>(s.particle_count) : std::nullopt;
+}
+std::optional<double> particle_effective(const StepRecord& s) {
+    return s.particle_count > 0 ? std::optional<double>(widen(s.particle_effective)) : std::nullopt;
 }
 // ---- the laser lesson (paper 001): one point per scan the filter matched -------------
 
@@ -362,7 +378,7 @@ constexpr std::array<PlotDefinition, kPlotKindCount> kPlots{{
     {PlotKind::TurnRate, "Turn rate ω", "ω (°/s)", "turn_rate", false, 0, true},
     {PlotKind::WheelSpeedEstimates, "Wheel speeds: Kalman filter vs differentiated encoders",
      "speed (m/s)", "wheel_speed_estimates", false, 0, true},
-    {PlotKind::ShadowError, "EKF and UKF on the same frames: position error", "‖error‖ (m)",
+    {PlotKind::ShadowError, "Filters on the same frames: position error", "‖error‖ (m)",
      "ekf_ukf_error", false, 0, true},
     {PlotKind::FilterCost, "Filter cost per step (smoothed, this machine)", "time (µs)",
      "filter_cost", false, 0, true},
@@ -372,6 +388,8 @@ constexpr std::array<PlotDefinition, kPlotKindCount> kPlots{{
      "laser_mismatches", false, 0, true},
     {PlotKind::LaserInnovation, "ICP pose observation: innovation V = Z − Ẑ", "V (cm, °)",
      "laser_innovation", false, 0, true},
+    {PlotKind::Particles, "Particles: count and effective sample size", "particles",
+     "particles", false, 0, true},
 }};
 
 using enum Series;
@@ -433,9 +451,13 @@ constexpr std::array<SeriesDefinition, kSeriesCount> kSeries{{
      EkfPositionError},
     {UkfPositionError, PlotKind::ShadowError, "UKF", ukf_position_error, kColourUkf, Line,
      UkfPositionError},
+    {PfPositionError, PlotKind::ShadowError, "PF", pf_position_error, kColourPf, Line,
+     PfPositionError},
     {EkfCost, PlotKind::FilterCost, "EKF", ekf_cost, kColourEkf, Line, EkfCost, nullptr,
      kCostSmoothing},
     {UkfCost, PlotKind::FilterCost, "UKF", ukf_cost, kColourUkf, Line, UkfCost, nullptr,
+     kCostSmoothing},
+    {PfCost, PlotKind::FilterCost, "PF", pf_cost, kColourPf, Line, PfCost, nullptr,
      kCostSmoothing},
     {LaserMatchedUsed, PlotKind::LaserMatches, "used", laser_matched_used, kColourApplied,
      Points, LaserMatchedUsed},
@@ -451,6 +473,10 @@ constexpr std::array<SeriesDefinition, kSeriesCount> kSeries{{
      LaserInnovationY},
     {LaserInnovationTheta, PlotKind::LaserInnovation, "θ (°)", laser_innovation_theta,
      kColourTheta, Line, LaserInnovationTheta},
+    {ParticleCount, PlotKind::Particles, "particles", particle_count, kColourParticleCount, Line,
+     ParticleCount},
+    {ParticleEffective, PlotKind::Particles, "N_eff", particle_effective,
+     kColourParticleEffective, Line, ParticleEffective},
 }};
 // clang-format on
 

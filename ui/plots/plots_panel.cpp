@@ -36,6 +36,7 @@ std::vector<Tab> tabs() {
          {PlotKind::HeadingSensors, PlotKind::TurnRate, PlotKind::WheelSpeedEstimates}},
         {"Laser scan matching",
          {PlotKind::LaserMatches, PlotKind::LaserMismatches, PlotKind::LaserInnovation}},
+        {"Particle filter", {PlotKind::Particles}},
     };
 }
 

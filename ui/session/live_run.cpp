@@ -188,8 +188,13 @@ void LiveRun::work(const std::stop_token& stop) {
                     last_truth = truth;
                 }
             }
-            publish(make_run_sample(snapshot, last_truth), stepper.frames_missing(),
-                    connection->health());
+            RunSample sample = make_run_sample(snapshot, last_truth);
+            if (snapshot.particles.count > 0) {  // the particle filter: its cloud to draw
+                auto cloud = std::make_shared<std::vector<ParticlePoint>>();
+                loop.filter().sample_cloud(kParticlesShown, *cloud);
+                sample.particles = std::move(cloud);
+            }
+            publish(std::move(sample), stepper.frames_missing(), connection->health());
             return is_over(snapshot);
         };
         while (!stop.stop_requested()) {

@@ -104,6 +104,8 @@ StepRecord make_step_record(const RunSample& sample) {
                                              as_record_float(x.shadow.estimate(kY)));
     record.filter_seconds = as_record_float(x.filter_seconds);
     record.shadow_filter_seconds = as_record_float(x.shadow_filter_seconds);
+    record.particle_effective = as_record_float(x.particles.effective);
+    record.particle_count = x.particles.count;
     record.laser = laser_numbers(x.laser);
     return record;
 }
@@ -204,6 +206,7 @@ void RunHistory::drop_old_samples(std::size_t batch_size) {
         RunSample& oldest = recent_.front();
         if (oldest.snapshot.time >= next_kept_time_) {
             next_kept_time_ = oldest.snapshot.time + kKeptPeriod;
+            oldest.particles.reset();  // 16 kB a cloud: kept for the recent samples only
             older_.push_back({step, std::move(oldest)});
         }
         recent_.pop_front();
@@ -255,6 +258,11 @@ RunHistory::Bytes RunHistory::bytes() const {
     bytes.records = records_.capacity() * sizeof(StepRecord);
     bytes.samples = (recent_.size() + older_.size()) * sizeof(RunSample);
     bytes.trace = trace_->bytes();
+    for (const RunSample& sample : recent_) {
+        if (sample.particles) {
+            bytes.particles += sample.particles->capacity() * sizeof(ParticlePoint);
+        }
+    }
     return bytes;
 }
 

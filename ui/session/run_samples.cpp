@@ -19,7 +19,7 @@ bool same_map(const OccupancyGrid& a, const OccupancyGrid& b) {
 }  // namespace
 
 RunSample make_run_sample(const LoopSnapshot& snapshot, const std::optional<GroundTruth>& truth) {
-    RunSample sample{snapshot, truth, std::numeric_limits<double>::quiet_NaN()};
+    RunSample sample{snapshot, truth, std::numeric_limits<double>::quiet_NaN(), nullptr};
     if (truth) {
         const StateVector true_state = to_state(truth->pose);
         sample.nees =

@@ -1,8 +1,8 @@
 #pragma once
 // The settings of the further lessons' estimators (papers 002, 003, 004): which localisation
-// the loop runs, EKF or UKF, and each filter's noise model and sensor calibration. Part of
-// LoopConfig; validated with it. Units are SI unless a field says otherwise; the wheel-speed
-// filter keeps the paper's degree units so its numbers match eq. 19.
+// the loop runs, EKF, UKF or particle filter, and each filter's noise model and sensor calibration.
+// Part of LoopConfig; validated with it. Units are SI unless a field says otherwise; the
+// wheel-speed filter keeps the paper's degree units so its numbers match eq. 19.
 
 #include <cstdint>
 #include <optional>

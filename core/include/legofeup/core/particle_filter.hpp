@@ -128,6 +128,9 @@ class ParticleFilter : public FilterBase<PoseStateSpace> {
     double w_slow_ = 0.0;
     double w_fast_ = 0.0;
     double pending_inject_ = 0.0;
+    /// N_eff of the last update's weights, before the resampling they may have triggered;
+    /// 0 until the cloud's first update (ParticleSummary::effective).
+    double weighed_effective_ = 0.0;
     ParticleSummary summary_;
 };
 

@@ -9,8 +9,11 @@
 namespace legofeup {
 
 struct ParticleSummary {
-    int count = 0;           ///< particles in the cloud (0: not a particle filter)
-    double effective = 0.0;  ///< N_eff = 1 / Σ wᵢ² of the weights now
+    int count = 0;  ///< particles in the cloud (0: not a particle filter)
+    /// N_eff = 1 / Σ wᵢ² of the last update's weights, before the resampling they may have
+    /// triggered (the value the resampling test compares with resample_threshold·N); before
+    /// the cloud's first update, of its weights now (N for a new cloud).
+    double effective = 0.0;
     /// The share of the weight within kNearMeanRadius of the weighted mean position: about 1
     /// for one tight cluster, well below 1 for a cloud split in two (the twin halls) or
     /// spread over a building (global localisation).

@@ -13,6 +13,8 @@
 //                                       takes the free space's mean and covariance
 //   particles()                       → the particle filter's cloud summary (count 0 for
 //                                       the Gaussian filters)
+//   sample_cloud(max, out)            → a thinned copy of the cloud to draw (empty for the
+//                                       Gaussian filters; particle_cloud.hpp)
 //   weighs_scans(), update(scan)      → the particle filter's laser model: a whole scan
 //                                       against the map's likelihood field
 //
@@ -35,6 +37,7 @@
 #include "legofeup/core/lesson_filters_config.hpp"
 #include "legofeup/core/likelihood_field.hpp"
 #include "legofeup/core/odometry_process_model.hpp"
+#include "legofeup/core/particle_cloud.hpp"
 #include "legofeup/core/particle_summary.hpp"
 #include "legofeup/core/pose_estimator_settings.hpp"
 #include "legofeup/core/state.hpp"
@@ -64,6 +67,9 @@ class PoseEstimator {
     virtual std::uint8_t last_repairs() const = 0;
     /// The particle cloud's summary after the last step (count 0: not a particle filter).
     virtual ParticleSummary particles() const = 0;
+    /// At most `max_points` particles of the cloud after the last step, for drawing
+    /// (thin_particles); `out` is cleared first and stays empty for a Gaussian filter.
+    virtual void sample_cloud(std::size_t max_points, std::vector<ParticlePoint>& out) const = 0;
 
     // Prediction, one overload per process model.
     virtual StepStatus predict(const OdometryProcessModel& model) = 0;

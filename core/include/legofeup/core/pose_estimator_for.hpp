@@ -9,8 +9,9 @@
 //   template predict(const Model&) -> StepStatus
 //   template update(const Model&, const MahalanobisGate&) -> UpdateReport<Model::kSize, 3>
 //   optionally set_params(const UkfParams&) (the UKF's spread)
-//   optionally configure(const PoseEstimatorSettings&), reset_uniform() and summary() (the
-//   particle filter: its own tuning, a cloud over the free space, the cloud's summary)
+//   optionally configure(const PoseEstimatorSettings&), reset_uniform(), summary() and
+//   xs(), ys(), thetas(), weights() (the particle filter: its own tuning, a cloud over the
+//   free space, the cloud's summary and its particles)
 
 #include "legofeup/core/pose_estimator.hpp"
 
@@ -55,6 +56,14 @@ class PoseEstimatorFor final : public PoseEstimator {
             return {};
         }
     }
+    void sample_cloud(std::size_t max_points, std::vector<ParticlePoint>& out) const override {
+        if constexpr (requires { filter_.weights(); }) {
+            thin_particles(filter_.xs(), filter_.ys(), filter_.thetas(), filter_.weights(),
+                           max_points, out);
+        } else {
+            out.clear();
+        }
+    }
     bool weighs_scans() const override {
         return requires(Filter & f, const ScanLikelihood& scan) {
             f.update(scan);
@@ -67,7 +76,7 @@ class PoseEstimatorFor final : public PoseEstimator {
             return StepStatus::NotAttempted;
         }
     }
-    /// The filter itself (the views that draw a particle cloud read it).
+    /// The filter itself (for tests of one filter through the interface).
     const Filter& filter() const { return filter_; }
     const StateVector& state() const override { return filter_.state(); }
     const StateCovariance& covariance() const override { return filter_.covariance(); }

@@ -29,6 +29,7 @@
 #include "legofeup/core/loop_config.hpp"
 #include "legofeup/core/loop_snapshot.hpp"
 #include "legofeup/core/occupancy_grid.hpp"
+#include "legofeup/core/particle_cloud.hpp"
 #include "legofeup/core/walls.hpp"
 
 namespace legofeup::ui {
@@ -40,6 +41,11 @@ struct RunSample {
     std::optional<GroundTruth> truth;
     /// NEES x̃ᵀ P⁻¹ x̃ of the pose error x̃ = x̂ − x (pose_error.hpp); NaN without truth.
     double nees = std::numeric_limits<double>::quiet_NaN();
+    /// The particle filter's cloud after the step, thinned to at most kParticlesShown points
+    /// (particle_cloud.hpp); null for the Gaussian filters, and for samples the history keeps
+    /// from before its recent ones (16 kB each: the arena draws the cloud of a step only
+    /// within the last kRecentSamples).
+    std::shared_ptr<const std::vector<ParticlePoint>> particles;
 };
 
 /// The laser lesson's (paper 001) scanner and thresholds, for the arena's scan layer and the
@@ -138,6 +144,9 @@ struct StepRecord {
     Eigen::Vector2f shadow_position = Eigen::Vector2f::Zero();
     float filter_seconds = 0.0F;
     float shadow_filter_seconds = 0.0F;
+    // The particle filter's cloud (ParticleSummary; count 0 with the Gaussian filters).
+    float particle_effective = 0.0F;  ///< N_eff
+    std::int32_t particle_count = 0;
     LaserNumbers laser;
 
     std::array<bool, kMaxBeaconSightings> bearing_applied{};
@@ -210,10 +219,11 @@ class RunHistory {
     /// The bytes the history holds for its steps, by part: what it allocated (capacity
     /// included), not what the allocator adds to it.
     struct Bytes {
-        std::size_t records = 0;  ///< every step's StepRecord
-        std::size_t samples = 0;  ///< the whole samples kept
-        std::size_t trace = 0;    ///< the trace rows: deflated blocks and the open one
-        std::size_t total() const { return records + samples + trace; }
+        std::size_t records = 0;    ///< every step's StepRecord
+        std::size_t samples = 0;    ///< the whole samples kept
+        std::size_t trace = 0;      ///< the trace rows: deflated blocks and the open one
+        std::size_t particles = 0;  ///< the particle clouds of the kept samples
+        std::size_t total() const { return records + samples + trace + particles; }
     };
     Bytes bytes() const;
 

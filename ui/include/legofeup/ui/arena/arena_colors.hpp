@@ -31,6 +31,7 @@ struct ArenaColors {
     QColor filter_map;     ///< the laser filter's own map when it is not the world's
     QColor expected_scan;  ///< the scan the filter expected (ray-cast in its map)
     QColor truth_scan;     ///< the measured scan placed at the true pose
+    QColor particles;      ///< the particle filter's cloud (drawn at the weight's opacity)
     QColor label_background;
 };
 

@@ -49,6 +49,9 @@ struct ArenaSizes {
     double scan_dot = 3.0;             ///< × line scale: a measured or expected scan's dots
     double truth_scan_dot = 2.5;       ///< × line scale: the scan at the true pose's dots
 
+    // ---- the particle filter -------------------------------------------------------------------
+    double particle_dot = 3.0;  ///< × line scale: one particle of the cloud
+
     // ---- kidnapping ---------------------------------------------------------------------------
     double pick_drag = 8.0;  ///< a drag at least this long aims the robot; less is a click
 };

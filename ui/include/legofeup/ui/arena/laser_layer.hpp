@@ -27,9 +27,11 @@ const RunSample* latest_scan_sample(const RunHistory& history, std::size_t look_
 /// The scan of `sample` (one with LaserUpdate::scan_received) as world points.
 LaserScanPoints laser_scan_points(const RunSample& sample, const LaserScene& scene);
 
-/// The scan matching's state in a few words: "ICP matched 512 pts", "mismatch ×37 · 41 pts",
-/// "recovery: P×10 · mismatch ×104"; empty when the sample has no scan.
-QString laser_status_text(const LaserUpdate& update, const LaserScene& scene);
+/// The scan update's state in a few words: "ICP matched 512 pts", "mismatch ×37 · 41 pts",
+/// "recovery: P×10 · mismatch ×104"; for the particle filter, which weighs the scan's end
+/// points instead of matching them (no ICP), "scan weighed · N_eff 6,320 of 10,000"; empty
+/// when the snapshot has no scan.
+QString laser_status_text(const LoopSnapshot& snapshot, const LaserScene& scene);
 
 /// The latest scan of `history` as the arena draws it; empty outside the laser lesson or
 /// before its first scan.

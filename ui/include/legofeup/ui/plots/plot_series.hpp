@@ -26,14 +26,16 @@ enum class PlotKind : int {
     HeadingSensors,       ///< heading errors against the truth: estimate, gyro, compass
     TurnRate,             ///< ω: truth, gyroscope, encoders, the 5-state EKF
     WheelSpeedEstimates,  ///< wheel surface speeds: truth, per-wheel KF, differentiated encoders
-    ShadowError,          ///< position error of the EKF and of the UKF run side by side
+    ShadowError,          ///< position error of the filters run side by side (EKF, UKF, PF)
     FilterCost,           ///< wall-clock µs per step of each filter, smoothed
     // The laser lesson's (paper 001): one point per scan.
     LaserMatches,     ///< ICP matched points, used or a mismatch, with min_matched_points
     LaserMismatches,  ///< consecutive mismatches with the recovery threshold; recoveries
     LaserInnovation,  ///< V = Z − Ẑ of the ICP pose observation: x, y (cm), θ (°)
+    // The particle filter's (filter.kind = "pf").
+    Particles,  ///< N_eff and the particle count, log scale
 };
-inline constexpr int kPlotKindCount = 16;
+inline constexpr int kPlotKindCount = 17;
 
 /// Every drawn series. The order is the drawing order within a plot: bands first, so the
 /// lines sit on top of them.
@@ -75,8 +77,10 @@ enum class Series : int {
     WheelLeftDifferentiated,
     EkfPositionError,
     UkfPositionError,
+    PfPositionError,
     EkfCost,
     UkfCost,
+    PfCost,
     LaserMatchedUsed,
     LaserMatchedMismatch,
     LaserConsecutiveMismatches,
@@ -84,8 +88,10 @@ enum class Series : int {
     LaserInnovationX,
     LaserInnovationY,
     LaserInnovationTheta,
+    ParticleCount,
+    ParticleEffective,
 };
-inline constexpr int kSeriesCount = 46;
+inline constexpr int kSeriesCount = 50;
 
 /// At most this many points of one series per sample (one per beacon sighting).
 inline constexpr int kMaxPointsPerSample = kMaxBeaconSightings;
