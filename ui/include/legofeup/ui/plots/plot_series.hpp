@@ -33,7 +33,7 @@ enum class PlotKind : int {
     LaserMismatches,  ///< consecutive mismatches with the recovery threshold; recoveries
     LaserInnovation,  ///< V = Z − Ẑ of the ICP pose observation: x, y (cm), θ (°)
     // The particle filter's (filter.kind = "pf").
-    Particles,  ///< N_eff and the particle count, log scale
+    Particles,  ///< N_eff and the particle count, linear scale (0 … N)
 };
 inline constexpr int kPlotKindCount = 17;
 
