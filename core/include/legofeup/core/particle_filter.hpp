@@ -5,7 +5,9 @@
 //
 //   predict(process model)   1. every particle moves by f(Xᵢ, U, qᵢ) with its own noise draw
 //                               qᵢ ~ N(0, Q), Q the model's — the EKF's Q (Table 4.3 line 4,
-//                               sample_motion_model with the odometry model of eq. 10)
+//                               sample_motion_model with the odometry model of eq. 10);
+//                               plus, when set, the book's α₁…α₄ noise on its motion
+//                               (odometry_alphas.hpp, Table 5.6)
 //   update(measurement, gate) 2. weights wᵢ ← wᵢ·p(z | Xᵢ), p the Gaussian of the model's R
 //                               around h(Xᵢ) (Table 4.3 line 5)
 //                             3. the likelihood's long- and short-term averages w_slow,
@@ -40,6 +42,7 @@
 #include "legofeup/core/filter_base.hpp"
 #include "legofeup/core/likelihood_field.hpp"
 #include "legofeup/core/matrix_square_root.hpp"
+#include "legofeup/core/odometry_alphas.hpp"
 #include "legofeup/core/particle_summary.hpp"
 #include "legofeup/core/pose_estimator_settings.hpp"
 #include "legofeup/core/pose_state_space.hpp"
@@ -146,13 +149,20 @@ StepStatus ParticleFilter::predict(const Model& model) {
     if (!Q.allFinite() || !psd_square_root<Nq>(Q, root)) {
         return StepStatus::RejectedNonFinite;
     }
-    // 1. Xᵢ ← f(Xᵢ, U, qᵢ), qᵢ = L·nᵢ.
+    // 1. Xᵢ ← f(Xᵢ, U, qᵢ), qᵢ = L·nᵢ; then the α's error on the motion f(Xᵢ, U, 0) − Xᵢ.
+    const OdometryAlphas& alphas = tuning_.motion_alphas;
+    const bool with_alphas = alphas.any();
     for (std::size_t i = 0; i < x_.size(); ++i) {
         NoiseVector n;
         for (int k = 0; k < Nq; ++k) {
             n(k) = random_.normal();
         }
-        const StateVector moved = model.propagate(particle(i), NoiseVector(root * n));
+        const StateVector from = particle(i);
+        StateVector moved = model.propagate(from, NoiseVector(root * n));
+        if (with_alphas) {
+            moved = add_odometry_alpha_noise(from, model.propagate(from, NoiseVector::Zero()),
+                                             moved, alphas, random_);
+        }
         if (!moved.allFinite()) {
             return StepStatus::RejectedNonFinite;  // a model that cannot move a particle
         }
