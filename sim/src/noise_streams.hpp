@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <random>
 
+#include "legofeup/core/splitmix64.hpp"
+
 namespace legofeup::sim {
 
 enum class NoiseStream : std::uint64_t {
@@ -30,14 +32,6 @@ enum class NoiseStream : std::uint64_t {
     IrUnitFront = 14,
     IrUnitRear = 15,
 };
-
-/// SplitMix64 finaliser: a well-mixed 64-bit value from any 64-bit input.
-inline std::uint64_t splitmix64(std::uint64_t value) {
-    value += 0x9E3779B97F4A7C15ULL;
-    value = (value ^ (value >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    value = (value ^ (value >> 27)) * 0x94D049BB133111EBULL;
-    return value ^ (value >> 31);
-}
 
 /// The engine seed of one stream of a run.
 inline std::uint64_t stream_seed(std::uint64_t run_seed, NoiseStream stream) {

@@ -30,6 +30,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "legofeup/core/splitmix64.hpp"
+
 namespace legofeup {
 
 class RandomStream {
@@ -40,11 +42,8 @@ class RandomStream {
     /// all zero, the one state xoshiro cannot leave).
     void reseed(std::uint64_t seed) {
         for (std::uint64_t& word : state_) {
-            seed += 0x9e3779b97f4a7c15ULL;
-            std::uint64_t z = seed;
-            z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-            z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-            word = z ^ (z >> 31);
+            word = splitmix64(seed);
+            seed += kSplitMix64Increment;
         }
     }
 

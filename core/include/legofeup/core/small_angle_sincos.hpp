@@ -12,6 +12,7 @@
 //   (sin a, cos a) = (sin r, cos r), (cos r, −sin r), (−sin r, −cos r), (−cos r, sin r).
 // a = 0 gives exactly (0, 1).
 
+#include <array>
 #include <cstdint>
 
 namespace legofeup {
@@ -34,41 +35,28 @@ inline SinCos small_angle_sincos(double a) {
     const double k = (a * kTwoOverPi + kRoundingShift) - kRoundingShift;
     const double r = (a - k * kHalfPiHead) - k * kHalfPiTail;
     const double r2 = r * r;
-    // Horner in r², coefficients ±1/n!.
-    const double sin_r =
-        r
-        + r * r2
-              * (-1.0 / 6.0
-                 + r2
-                       * (1.0 / 120.0
-                          + r2
-                                * (-1.0 / 5040.0
-                                   + r2
-                                         * (1.0 / 362880.0
-                                            + r2
-                                                  * (-1.0 / 39916800.0
-                                                     + r2
-                                                           * (1.0 / 6227020800.0
-                                                              + r2 * (-1.0 / 1307674368000.0)))))));
-    const double cos_r =
-        1.0
-        + r2
-              * (-0.5
-                 + r2
-                       * (1.0 / 24.0
-                          + r2
-                                * (-1.0 / 720.0
-                                   + r2
-                                         * (1.0 / 40320.0
-                                            + r2
-                                                  * (-1.0 / 3628800.0
-                                                     + r2
-                                                           * (1.0 / 479001600.0
-                                                              + r2
-                                                                    * (-1.0 / 87178291200.0
-                                                                       + r2
-                                                                             * (1.0
-                                                                                / 20922789888000.0))))))));
+    // Horner in r²: sin r = r + r·r²·(c₁ + r²·(c₂ + …)), cos r = 1 + r²·(d₁ + r²·(d₂ + …)),
+    // with cₙ = (−1)ⁿ/(2n+1)! and dₙ = (−1)ⁿ/(2n)!.
+    constexpr std::array<double, 7> kSinCoefficients = {
+        -1.0 / 6.0,        1.0 / 120.0,        -1.0 / 5040.0,         1.0 / 362880.0,
+        -1.0 / 39916800.0, 1.0 / 6227020800.0, -1.0 / 1307674368000.0};
+    constexpr std::array<double, 8> kCosCoefficients = {-0.5,
+                                                        1.0 / 24.0,
+                                                        -1.0 / 720.0,
+                                                        1.0 / 40320.0,
+                                                        -1.0 / 3628800.0,
+                                                        1.0 / 479001600.0,
+                                                        -1.0 / 87178291200.0,
+                                                        1.0 / 20922789888000.0};
+    const auto horner = [r2](const auto& coefficients) {
+        double sum = coefficients.back();
+        for (auto c = coefficients.rbegin() + 1; c != coefficients.rend(); ++c) {
+            sum = *c + r2 * sum;
+        }
+        return sum;
+    };
+    const double sin_r = r + r * r2 * horner(kSinCoefficients);
+    const double cos_r = 1.0 + r2 * horner(kCosCoefficients);
     switch (static_cast<std::int64_t>(k) & 3) {
         case 0:
             return {sin_r, cos_r};
